@@ -1,0 +1,27 @@
+#pragma once
+
+#include <chrono>
+#include <string>
+
+#include "render/renderer.hpp"
+
+namespace rise::cli {
+
+// A one-line progress bar on standard error while a render runs, drawn only
+// when standard error is a terminal (so logs and pipes stay clean), and
+// erased when the render ends.
+class ProgressBar final : public RenderObserver {
+ public:
+  explicit ProgressBar(std::string label);
+  ~ProgressBar() override;
+
+  void onProgress(double fractionDone) override;
+
+ private:
+  std::string label_;
+  bool enabled_;
+  int lastPercent_ = -1;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace rise::cli

@@ -1,0 +1,45 @@
+#include "stats_report.hpp"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+
+namespace rise::cli {
+namespace {
+
+std::string formatValue(double value) {
+  if (value == std::floor(value) && std::abs(value) < 1e15)
+    return std::to_string(static_cast<long long>(value));
+  return std::to_string(value);
+}
+
+}  // namespace
+
+void printStats(std::ostream& out, const RenderDescription& render, const Stats& stats) {
+  out << render.algorithm << ": " << render.scene << ", " << render.width << "x" << render.height
+      << ", " << render.threads << (render.threads == 1 ? " thread\n" : " threads\n");
+  for (const auto& [name, value] : stats.entries()) {
+    std::string label = name;
+    label.resize(std::max<std::size_t>(label.size(), 28), ' ');
+    out << "  " << label << formatValue(value) << "\n";
+  }
+}
+
+void writeStatsJson(const std::filesystem::path& path, const RenderDescription& render,
+                    const Stats& stats) {
+  nlohmann::ordered_json json = {{"scene", render.scene},
+                                 {"algorithm", render.algorithm},
+                                 {"width", render.width},
+                                 {"height", render.height},
+                                 {"threads", render.threads}};
+  for (const auto& [name, value] : stats.entries()) json[name] = value;
+
+  std::ofstream file(path);
+  file << json.dump(2) << "\n";
+  if (!file)
+    throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+}
+
+}  // namespace rise::cli

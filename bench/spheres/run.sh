@@ -1,0 +1,142 @@
+#!/usr/bin/env bash
+# The speed benchmark against POV-Ray 3.7. Both renderers trace the same
+# Whitted scene (examples/spheres.yaml for RISE, bench/spheres/spheres.pov for
+# POV-Ray) at 800x600 on two threads, three times each, and the best time of
+# each is compared. Only the rendering is timed: RISE's "render_seconds" from
+# its --stats JSON, POV-Ray's "Trace Time" from its statistics; neither counts
+# start-up or scene parsing. Both images are kept for a side-by-side look.
+set -euo pipefail
+shopt -s inherit_errexit
+
+readonly RUNS=3
+readonly WIDTH=800
+readonly HEIGHT=600
+readonly THREADS=2
+
+usage() {
+  cat <<EOF
+usage: bench/spheres/run.sh [--aa] [--only rise|povray] [--out DIR] [BUILD_DIR]
+  BUILD_DIR      RISE's build directory, holding the rise executable (default: build)
+  --aa           anti-alias both: RISE with 16 jittered samples a pixel,
+                 POV-Ray with +A0.0 +AM1 +R4 +J (16 jittered samples a pixel)
+  --only WHICH   time only RISE or only POV-Ray
+  --out DIR      where images, statistics and logs go (default: out/bench-spheres)
+EOF
+}
+
+die() {
+  echo "run.sh: $*" >&2
+  exit 1
+}
+
+antialias=false
+only=""
+out=out/bench-spheres
+build=build
+while (($# > 0)); do
+  case "$1" in
+    --aa) antialias=true ;;
+    --only)
+      (($# >= 2)) || die "--only needs rise or povray"
+      only="$2"
+      shift
+      ;;
+    --out)
+      (($# >= 2)) || die "--out needs a directory"
+      out="$2"
+      shift
+      ;;
+    -h | --help)
+      usage
+      exit 0
+      ;;
+    -*) die "unknown option $1 (see --help)" ;;
+    *) build="$1" ;;
+  esac
+  shift
+done
+case "$only" in
+  "" | rise | povray) ;;
+  *) die "--only takes rise or povray, not '$only'" ;;
+esac
+
+# Paths given by the caller are relative to where it stands; the renders run
+# from the repository root, where the scene paths are.
+build="$(realpath -m "$build")"
+out="$(realpath -m "$out")"
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+mkdir -p "$out"
+
+if $antialias; then
+  suffix="-aa"
+  rise_antialiasing=(--samples 16 --pattern jittered)
+  povray_antialiasing=(+A0.0 +AM1 +R4 +J)
+  mode="16 samples a pixel, jittered"
+else
+  suffix=""
+  rise_antialiasing=()
+  povray_antialiasing=(-A)
+  mode="no anti-aliasing"
+fi
+
+# Prints the render seconds of one RISE run, to the millisecond like POV-Ray's.
+time_rise() {
+  local image="$out/rise$suffix.png" stats="$out/rise$suffix.json" log="$out/rise$suffix.log"
+  if ! "$build/rise" render examples/spheres.yaml -o "$image" --width "$WIDTH" \
+    --height "$HEIGHT" --threads "$THREADS" --stats "$stats" "${rise_antialiasing[@]}" \
+    >"$log" 2>&1; then
+    die "RISE failed; see $log"
+  fi
+  python3 -c 'import json, sys; print("%.3f" % json.load(open(sys.argv[1]))["render_seconds"])' "$stats" \
+    2>/dev/null || die "no render_seconds in $stats"
+}
+
+# Prints the trace seconds of one POV-Ray run: the number in parentheses on the
+# "Trace Time:" line of its statistics, which POV-Ray writes to stderr.
+time_povray() {
+  local image="$out/povray$suffix.png" log="$out/povray$suffix.log" seconds
+  if ! povray +Ibench/spheres/spheres.pov +O"$image" +FN File_Gamma=sRGB +W"$WIDTH" \
+    +H"$HEIGHT" +WT"$THREADS" -D "${povray_antialiasing[@]}" >"$log" 2>&1; then
+    die "POV-Ray failed; see $log"
+  fi
+  seconds="$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$log")"
+  [[ -n "$seconds" ]] || die "no 'Trace Time' in POV-Ray's statistics; see $log"
+  echo "$seconds"
+}
+
+# Prints the smallest of RUNS timings made by the function named $1.
+best_of_runs() {
+  local run times=()
+  for ((run = 1; run <= RUNS; ++run)); do
+    times+=("$("$1")")
+    echo "  $2 run $run: ${times[-1]} s" >&2
+  done
+  printf '%s\n' "${times[@]}" | sort -g | head -n 1
+}
+
+rise_seconds="-"
+povray_seconds="-"
+ratio="-"
+images=()
+echo "spheres ${WIDTH}x${HEIGHT}, $THREADS threads, $mode, best of $RUNS" >&2
+if [[ "$only" != povray ]]; then
+  [[ -x "$build/rise" ]] || die "no RISE executable at $build/rise (build it, or pass BUILD_DIR)"
+  rise_seconds="$(best_of_runs time_rise RISE)"
+  images+=("$out/rise$suffix.png")
+fi
+if [[ "$only" != rise ]]; then
+  command -v povray >/dev/null || die "povray is not installed (apt-get install povray)"
+  povray_seconds="$(best_of_runs time_povray POV-Ray)"
+  images+=("$out/povray$suffix.png")
+fi
+if [[ -z "$only" ]]; then
+  ratio="$(awk -v pov="$povray_seconds" -v rise="$rise_seconds" \
+    'BEGIN { if (rise > 0) printf "%.2f", pov / rise; else print "-" }')"
+fi
+
+echo
+printf '| %-9s | %-12s | %-15s |\n' "RISE (s)" "POV-Ray (s)" "POV-Ray / RISE"
+printf '|%s|%s|%s|\n' "-----------" "--------------" "-----------------"
+printf '| %-9s | %-12s | %-15s |\n' "$rise_seconds" "$povray_seconds" "$ratio"
+echo
+echo "images: ${images[*]}"

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <cassert>
+#include <vector>
+
+#include "core/color.hpp"
+
+namespace rise {
+
+// A width x height grid of linear colours, row 0 at the top.
+class Image {
+ public:
+  Image() = default;
+  Image(int width, int height, Color fill = Color(0.0f))
+      : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * height, fill) {}
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  Color& at(int x, int y) { return pixels_[index(x, y)]; }
+  const Color& at(int x, int y) const { return pixels_[index(x, y)]; }
+
+  const std::vector<Color>& pixels() const { return pixels_; }
+
+ private:
+  std::size_t index(int x, int y) const {
+    assert(x >= 0 && x < width_ && y >= 0 && y < height_);
+    return static_cast<std::size_t>(y) * width_ + x;
+  }
+
+  int width_ = 0;
+  int height_ = 0;
+  std::vector<Color> pixels_;
+};
+
+}  // namespace rise

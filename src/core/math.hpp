@@ -1,0 +1,25 @@
+// Vector types for the whole renderer. RISE computes in single precision:
+// scenes are a few units across, and every ray offset (kRayEpsilon) is chosen
+// for that scale.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <limits>
+
+namespace rise {
+
+using Vec2 = glm::vec2;
+using Vec3 = glm::vec3;
+using Mat3 = glm::mat3;
+using Mat4 = glm::mat4;
+
+inline constexpr float kPi = 3.14159265358979323846f;
+inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// How far a secondary ray starts from the surface it leaves, so that it does
+// not find that surface again through rounding ("shadow acne").
+inline constexpr float kRayEpsilon = 1e-4f;
+
+inline float radians(float degrees) { return degrees * (kPi / 180.0f); }
+
+}  // namespace rise

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace rise {
+
+// What a render measured, as named numbers in the order they were added:
+// time, rays by kind, intersection tests... The CLI prints them, --stats
+// writes them as JSON, and the compare table puts algorithms side by side.
+class Stats {
+ public:
+  void add(std::string name, double value) { entries_.emplace_back(std::move(name), value); }
+
+  const std::vector<std::pair<std::string, double>>& entries() const { return entries_; }
+
+  // The value of `name`, or 0 when it was not recorded.
+  double value(const std::string& name) const {
+    for (const auto& [key, v] : entries_)
+      if (key == name) return v;
+    return 0.0;
+  }
+
+ private:
+  std::vector<std::pair<std::string, double>> entries_;
+};
+
+}  // namespace rise

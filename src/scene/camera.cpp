@@ -1,0 +1,24 @@
+#include "scene/camera.hpp"
+
+#include <cmath>
+
+namespace rise {
+
+ViewFrame::ViewFrame(const Camera& camera, int width, int height)
+    : eye_(camera.position), width_(width), height_(height) {
+  forward_ = glm::normalize(camera.lookAt - camera.position);
+  // A right-handed world seen from behind the eye: x to the right, y up,
+  // looking along forward.
+  right_ = glm::normalize(glm::cross(forward_, camera.up));
+  up_ = glm::cross(right_, forward_);
+  halfHeight_ = std::tan(radians(camera.fovDegrees) * 0.5f);
+  halfWidth_ = halfHeight_ * static_cast<float>(width) / static_cast<float>(height);
+}
+
+Ray ViewFrame::primaryRay(float x, float y) const {
+  const float sx = (2.0f * x / static_cast<float>(width_) - 1.0f) * halfWidth_;
+  const float sy = (1.0f - 2.0f * y / static_cast<float>(height_)) * halfHeight_;
+  return Ray{eye_, glm::normalize(forward_ + sx * right_ + sy * up_)};
+}
+
+}  // namespace rise

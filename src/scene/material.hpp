@@ -1,0 +1,33 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "core/color.hpp"
+#include "scene/texture.hpp"
+
+namespace rise {
+
+// The Phong illumination model's surface description, with the textbook's
+// names, plus what Whitted's ray tracer adds: mirror reflection and
+// transmission through a refracting interior.
+struct Material {
+  std::string name;
+  Color color{1.0f};          // C: the surface colour, for ambient and diffuse light
+  float ka = 0.1f;            // ambient coefficient
+  float kd = 0.9f;            // diffuse coefficient
+  float ks = 0.0f;            // specular coefficient (the highlight has the light's colour)
+  float n = 1.0f;             // specular exponent: larger is a smaller, sharper highlight
+  float reflection = 0.0f;    // weight of the mirror-reflected ray
+  float transmission = 0.0f;  // weight of the refracted ray, tinted by C
+  float ior = 1.0f;           // index of refraction of the interior (outside is 1)
+
+  std::shared_ptr<const Texture> texture;  // when set, replaces color over the surface
+
+  Color colorAt(const SurfacePoint& surface) const {
+    return texture ? texture->colorAt(surface) : color;
+  }
+  bool isTransparent() const { return transmission > 0.0f; }
+};
+
+}  // namespace rise

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/color.hpp"
+#include "scene/camera.hpp"
+#include "scene/light.hpp"
+#include "scene/material.hpp"
+#include "scene/shape.hpp"
+
+namespace rise {
+
+// The image a scene asks for; the command line may override its size.
+struct ImageSpec {
+  int width = 640;
+  int height = 480;
+  Color background{0.0f};  // the colour of rays that hit nothing
+};
+
+// Everything that is rendered: what the scene file describes, validated and
+// ready for any algorithm.
+struct Scene {
+  std::string source;  // the scene file's name, for messages
+  ImageSpec image;
+  Camera camera;
+  Color ambient{0.0f};  // Ia: the ambient light
+  std::vector<std::unique_ptr<Light>> lights;
+  std::vector<Material> materials;
+  std::vector<std::unique_ptr<Shape>> shapes;
+
+  const Material& materialOf(const Shape& shape) const { return materials[shape.material()]; }
+};
+
+}  // namespace rise

@@ -1,0 +1,71 @@
+#include "scene/shapes/cone.hpp"
+
+#include "scene/shapes/disk.hpp"
+#include "scene/shapes/quadratic.hpp"
+
+namespace rise {
+
+namespace {
+
+// The primitive a cone hit records.
+enum Part : int { kSide, kBaseCap };
+
+}  // namespace
+
+Cone::Cone(Vec3 base, Vec3 axis, float radius, float height, int material)
+    : Shape(material),
+      base_(base),
+      axis_(glm::normalize(axis)),
+      radius_(radius),
+      height_(height),
+      apex_(base_ + height * axis_),
+      slopeFactor_(1.0f + (radius / height) * (radius / height)) {}
+
+bool Cone::intersect(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& counters) const {
+  ++counters.tests;
+  float nearest = hit.t;
+  int part = -1;
+  // Heights are measured along the axis from the apex: the cone lies in
+  // [-height, 0], the other nappe of the quadric above 0.
+  const Vec3 fromApex = ray.origin - apex_;
+  const float heightAtOrigin = glm::dot(fromApex, axis_);
+  const float heightRate = glm::dot(ray.direction, axis_);
+  const float a = glm::dot(ray.direction, ray.direction) - slopeFactor_ * heightRate * heightRate;
+  const float halfB =
+      glm::dot(fromApex, ray.direction) - slopeFactor_ * heightAtOrigin * heightRate;
+  const float c = glm::dot(fromApex, fromApex) - slopeFactor_ * heightAtOrigin * heightAtOrigin;
+  float roots[2];
+  if (solveQuadratic(a, halfB, c, halfB * halfB - a * c, roots[0], roots[1])) {
+    for (float t : roots) {
+      const float height = heightAtOrigin + t * heightRate;
+      if (t > tMin && t < nearest && height >= -height_ && height <= 0.0f) {
+        nearest = t;
+        part = kSide;
+        break;
+      }
+    }
+  }
+  float tCap;
+  if (intersectDisk(ray, base_, axis_, radius_ * radius_, tMin, nearest, tCap)) {
+    nearest = tCap;
+    part = kBaseCap;
+  }
+  if (part < 0) return false;
+  hit.t = nearest;
+  hit.shape = this;
+  hit.primitive = part;
+  return true;
+}
+
+SurfacePoint Cone::surfaceAt(const Ray& ray, const Hit& hit) const {
+  const Vec3 position = ray.at(hit.t);
+  if (hit.primitive == kBaseCap) return {position, -axis_};
+  // The gradient of the quadric, which points out of the cone.
+  const Vec3 fromApex = position - apex_;
+  const Vec3 gradient = fromApex - slopeFactor_ * glm::dot(fromApex, axis_) * axis_;
+  // The apex has no tangent plane; the axis stands in for its normal.
+  if (glm::dot(gradient, gradient) == 0.0f) return {position, axis_};
+  return {position, glm::normalize(gradient)};
+}
+
+}  // namespace rise

@@ -1,0 +1,77 @@
+// What the shape tests share: one ray against one shape, asked as a renderer
+// asks it, and the answer compared with analytic values.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "scene/shape.hpp"
+
+namespace rise::shape_testing {
+
+struct Intersection {
+  bool found = false;
+  Hit hit;
+  SurfacePoint surface{};
+  IntersectionCounters counters;
+};
+
+// Intersects over (tMin, tMax) and, on a hit, asks the shape for its surface.
+inline Intersection intersect(const Shape& shape, const Ray& ray, float tMin = 0.0f,
+                              float tMax = kInfinity) {
+  Intersection result;
+  result.hit.t = tMax;
+  result.found = shape.intersect(ray, tMin, result.hit, result.counters);
+  if (result.found) result.surface = shape.surfaceAt(ray, result.hit);
+  return result;
+}
+
+inline std::string text(const Vec3& v) {
+  std::ostringstream out;
+  out << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+  return out.str();
+}
+
+// Fails on NaN too.
+inline ::testing::AssertionResult nearlyEqual(const Vec3& actual, const Vec3& expected,
+                                              float tolerance = 1e-4f) {
+  const Vec3 error = glm::abs(actual - expected);
+  if (error.x <= tolerance && error.y <= tolerance && error.z <= tolerance)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure()
+         << text(actual) << " is not within " << tolerance << " of " << text(expected);
+}
+
+// A hit at t, with the given point and unit normal.
+inline ::testing::AssertionResult hitsAt(const Intersection& result, float t, const Vec3& position,
+                                         const Vec3& normal, float tolerance = 1e-4f) {
+  if (!result.found) return ::testing::AssertionFailure() << "no hit";
+  if (!(std::abs(result.hit.t - t) <= tolerance))
+    return ::testing::AssertionFailure() << "t = " << result.hit.t << ", expected " << t;
+  if (auto near = nearlyEqual(result.surface.position, position, tolerance); !near)
+    return ::testing::AssertionFailure() << "position " << near.message();
+  if (auto near = nearlyEqual(result.surface.normal, normal, tolerance); !near)
+    return ::testing::AssertionFailure() << "normal " << near.message();
+  return ::testing::AssertionSuccess();
+}
+
+// A miss leaves the hit as it was.
+inline ::testing::AssertionResult misses(const Intersection& result, float tMax = kInfinity) {
+  if (result.found) return ::testing::AssertionFailure() << "hit at t = " << result.hit.t;
+  if (result.hit.t != tMax || result.hit.shape != nullptr)
+    return ::testing::AssertionFailure() << "a miss changed the hit";
+  return ::testing::AssertionSuccess();
+}
+
+// The frame of an axis tilted 45 degrees from y towards x: it takes y to
+// (1, 1, 0) / sqrt(2), x to (1, -1, 0) / sqrt(2) and keeps z, so that a case
+// built around the y axis can be replayed around the tilted one.
+inline Vec3 tilted(const Vec3& v) {
+  const float s = std::sqrt(0.5f);
+  return v.x * Vec3(s, -s, 0.0f) + v.y * Vec3(s, s, 0.0f) + Vec3(0.0f, 0.0f, v.z);
+}
+
+}  // namespace rise::shape_testing

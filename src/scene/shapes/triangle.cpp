@@ -1,0 +1,24 @@
+#include "scene/shapes/triangle.hpp"
+
+namespace rise {
+
+Triangle::Triangle(const std::array<Vec3, 3>& vertices, int material)
+    : Shape(material),
+      vertices_(vertices),
+      normal_(windingNormal(vertices[0], vertices[1], vertices[2])) {}
+
+bool Triangle::intersect(const Ray& ray, float tMin, Hit& hit,
+                         IntersectionCounters& counters) const {
+  ++counters.tests;
+  if (!intersectTriangle(ray, vertices_[0], vertices_[1], vertices_[2], tMin, hit.t, hit.t,
+                         hit.barycentric))
+    return false;
+  hit.shape = this;
+  return true;
+}
+
+SurfacePoint Triangle::surfaceAt(const Ray& ray, const Hit& hit) const {
+  return {ray.at(hit.t), normal_};
+}
+
+}  // namespace rise

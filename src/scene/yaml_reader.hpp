@@ -1,0 +1,101 @@
+// Reading a parsed YAML document with a precise message for everything that
+// can be wrong with it: each value is read through a Field that knows what
+// messages call it ("'radius' in sphere") and where they point, and each map
+// through a CheckedMap that rejects missing, repeated and unknown keys.
+#pragma once
+
+#include <yaml-cpp/yaml.h>
+
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/color.hpp"
+#include "core/math.hpp"
+
+namespace rise {
+
+// A problem at one place in a document; the scene loader adds the file name.
+class YamlValueError : public std::runtime_error {
+ public:
+  YamlValueError(const YAML::Mark& mark, const std::string& message)
+      : std::runtime_error(message), mark_(mark) {}
+
+  const YAML::Mark& mark() const { return mark_; }
+
+ private:
+  YAML::Mark mark_;
+};
+
+// One value of the document, what messages call it, and where they point: at
+// the value, or at its key when the value is empty (an empty value has no
+// place of its own; yaml-cpp puts it at whatever follows).
+struct Field {
+  YAML::Node node;
+  std::string name;
+  YAML::Mark mark;
+};
+
+Field makeField(const YAML::Node& node, std::string name, const YAML::Mark& keyMark);
+
+[[noreturn]] void failAt(const YAML::Mark& mark, const std::string& message);
+
+// "expected <expectation> for <field name>, got <what the value is>".
+[[noreturn]] void failExpected(const Field& field, std::string_view expectation);
+
+// "a, b, c".
+std::string joinedWithCommas(const std::vector<std::string>& words);
+
+// How a value looks to the person who wrote it: "'abc'", "a list of 2 items",
+// "nothing"...
+std::string describe(const YAML::Node& node);
+
+// The candidate closest in spelling to `word`, when it is close enough to be
+// a likely typo: "did you mean 'radius'?"; otherwise the list of candidates.
+std::string suggestAlternative(std::string_view word, const std::vector<std::string>& candidates);
+
+enum class Bound { Any, NonNegative, Positive };
+
+float readNumber(const Field& field, Bound bound = Bound::Any);
+int readWholeNumber(const Field& field, Bound bound = Bound::Any);
+Vec3 readVec3(const Field& field);
+Vec3 readDirection(const Field& field);  // a Vec3 that is not zero
+Color readColor(const Field& field);     // three numbers >= 0
+std::string readName(const Field& field);
+
+// The items of a list of minItems to maxItems items, each named `itemName`.
+std::vector<Field> readList(const Field& field, std::string_view expectation, std::string itemName,
+                            std::size_t minItems = 0,
+                            std::size_t maxItems = std::numeric_limits<std::size_t>::max());
+
+// The entries of a map in document order; keys must be plain values and
+// appear once in it. Messages call the map `mapName`.
+struct MapEntry {
+  std::string key;
+  YAML::Mark keyMark;
+  YAML::Node value;
+};
+std::vector<MapEntry> readMap(const Field& field, std::string_view expectation,
+                              std::string_view mapName);
+
+// A map with a fixed set of allowed keys, called `name` in messages
+// ("sphere", "camera", "material 'red'").
+class CheckedMap {
+ public:
+  CheckedMap(const Field& field, std::string name, std::vector<std::string> allowedKeys);
+
+  // The value of a key that must be there: "sphere is missing 'radius'".
+  Field required(std::string_view key) const;
+  std::optional<Field> optional(std::string_view key) const;
+
+ private:
+  std::string name_;
+  YAML::Mark mark_;
+  std::vector<MapEntry> entries_;
+};
+
+}  // namespace rise

@@ -1,0 +1,151 @@
+// End-to-end tests of the `rise` command: what a user types and sees.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/image_io.hpp"
+
+namespace rise {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status;
+  std::string output;  // standard output and standard error together
+};
+
+CommandResult runRise(const std::string& arguments) {
+  const std::string command = std::string(RISE_EXECUTABLE) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string output;
+  std::array<char, 4096> buffer;
+  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) output += buffer.data();
+  const int status = pclose(pipe);
+  return {WEXITSTATUS(status), output};
+}
+
+std::string example(const std::string& name) {
+  return std::string(RISE_SOURCE_DIR) + "/examples/" + name;
+}
+
+class RiseCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ = fs::temp_directory_path() /
+                 ("rise-cli-" +
+                  std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(directory_);
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  fs::path file(const std::string& name) const { return directory_ / name; }
+
+  fs::path directory_;
+};
+
+TEST_F(RiseCommand, RendersTheClassicSceneWithStatsAndBuffers) {
+  const CommandResult result = runRise(
+      "render " + example("classic.yaml") + " -o " + file("classic.png").string() +
+      " --width 64 --threads 2 --aov depth,normal,cost --stats " + file("stats.json").string());
+  ASSERT_EQ(result.status, 0) << result.output;
+
+  const Image image = readImage(file("classic.png"));
+  EXPECT_EQ(image.width(), 64);
+  EXPECT_EQ(image.height(), 48);  // the scene's 4:3 aspect ratio is kept
+  for (const char* buffer : {"depth", "normal", "cost"})
+    EXPECT_TRUE(fs::exists(file(std::string("classic.") + buffer + ".png"))) << buffer;
+
+  std::ifstream statsFile(file("stats.json"));
+  const nlohmann::json stats = nlohmann::json::parse(statsFile);
+  EXPECT_EQ(stats["algorithm"], "ray-tracing");
+  EXPECT_EQ(stats["width"], 64);
+  EXPECT_EQ(stats["threads"], 2);
+  EXPECT_EQ(stats["primary_rays"], 64 * 48);
+  EXPECT_GT(stats["shadow_rays"].get<double>(), 0.0);
+  EXPECT_GT(stats["reflection_rays"].get<double>(), 0.0);
+  EXPECT_GT(stats["refraction_rays"].get<double>(), 0.0);
+  EXPECT_GT(stats["intersection_tests"].get<double>(), 0.0);
+  EXPECT_GT(stats["render_seconds"].get<double>(), 0.0);
+
+  EXPECT_NE(result.output.find("primary_rays"), std::string::npos);  // the report on stderr
+  EXPECT_EQ(result.output.find('\r'), std::string::npos);  // no progress bar off a terminal
+}
+
+TEST_F(RiseCommand, ReadsTheSceneFromStandardInput) {
+  const CommandResult result = runRise("render - -o " + file("piped.ppm").string() +
+                                       " --width 32 < " + example("classic.yaml"));
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_EQ(readImage(file("piped.ppm")).width(), 32);
+}
+
+TEST_F(RiseCommand, LinearEncodingWritesRawValues) {
+  std::ofstream(file("grey.yaml")) << "image: {width: 4, height: 4, background: [0.5, 0.5, 0.5]}\n"
+                                      "camera: {position: [0, 0, -5], look_at: [0, 0, 0]}\n"
+                                      "objects: []\n";
+  ASSERT_EQ(
+      runRise("render " + file("grey.yaml").string() + " -o " + file("srgb.png").string()).status,
+      0);
+  ASSERT_EQ(runRise("render " + file("grey.yaml").string() + " -o " + file("linear.png").string() +
+                    " --encoding linear")
+                .status,
+            0);
+  EXPECT_NEAR(readImage(file("srgb.png")).at(0, 0).r, 0.5f, 0.003f);
+  EXPECT_NEAR(readImage(file("linear.png"), Encoding::Linear).at(0, 0).r, 0.5f, 0.003f);
+}
+
+TEST_F(RiseCommand, ASceneErrorExitsWithStatusTwoAndWritesNothing) {
+  std::ofstream(file("typo.yaml")) << "camera: {position: [0, 0, -5], look_at: [0, 0, 0]}\n"
+                                      "materials: {m: {}}\n"
+                                      "objects:\n"
+                                      "  - sphere: {center: [0, 0, 0], radus: 1, material: m}\n";
+  const CommandResult result =
+      runRise("render " + file("typo.yaml").string() + " -o " + file("typo.png").string());
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find(file("typo.yaml").string() + ":4:"), std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("did you mean 'radius'"), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists(file("typo.png")));
+}
+
+TEST_F(RiseCommand, AMissingSceneFileIsBadInput) {
+  const CommandResult result = runRise("render " + file("absent.yaml").string());
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("absent.yaml"), std::string::npos) << result.output;
+}
+
+TEST_F(RiseCommand, AnUnknownAlgorithmIsBadInput) {
+  const CommandResult result = runRise("render " + example("classic.yaml") + " -a teleport");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("teleport"), std::string::npos) << result.output;
+}
+
+TEST_F(RiseCommand, AnUnwritableOutputExitsWithStatusOne) {
+  const CommandResult result = runRise("render " + example("classic.yaml") + " --width 8 -o " +
+                                       file("no/such/folder/x.png").string());
+  EXPECT_EQ(result.status, 1);
+  EXPECT_NE(result.output.find("x.png"), std::string::npos) << result.output;
+}
+
+TEST_F(RiseCommand, ListsTheAlgorithmsWithTheirCitations) {
+  const CommandResult result = runRise("algorithms");
+  EXPECT_EQ(result.status, 0);
+  EXPECT_NE(result.output.find("ray-tracing"), std::string::npos);
+  EXPECT_NE(result.output.find("Whitted"), std::string::npos);
+}
+
+TEST_F(RiseCommand, ValidatesWithoutRendering) {
+  const CommandResult result = runRise("validate " + example("classic.yaml"));
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("ok"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rise
