@@ -21,6 +21,15 @@ bool solveQuadratic(float a, float halfB, float c, float discriminant, float& t0
 // origin, which stays accurate when the line starts far away (Haines et al.,
 // "Precision Improvements for Ray/Sphere Intersection", Ray Tracing Gems, 2019).
 // Returns false when the line does not come that close or does not move (d = 0).
-bool solveLineAtDistance(Vec3 f, Vec3 d, float radiusSquared, float& t0, float& t1);
+// Inline: it is the innermost test of every sphere and cylinder.
+inline bool solveLineAtDistance(Vec3 f, Vec3 d, float radiusSquared, float& t0, float& t1) {
+  const float a = glm::dot(d, d);
+  if (a == 0.0f) return false;
+  const float halfB = glm::dot(f, d);
+  const Vec3 closestApproach = f - (halfB / a) * d;
+  const float discriminant = a * (radiusSquared - glm::dot(closestApproach, closestApproach));
+  const float c = glm::dot(f, f) - radiusSquared;
+  return solveQuadratic(a, halfB, c, discriminant, t0, t1);
+}
 
 }  // namespace rise

@@ -9,8 +9,13 @@ Sphere::Sphere(Vec3 center, float radius, int material)
 
 bool Sphere::intersect(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& counters) const {
   ++counters.tests;
+  const Vec3 fromCenter = ray.origin - center_;
+  // Most rays start outside a sphere and go away from it, or miss it wide:
+  // tell them apart before solving anything.
+  const float halfB = glm::dot(fromCenter, ray.direction);
+  if (halfB > 0.0f && glm::dot(fromCenter, fromCenter) > radiusSquared_) return false;
   float roots[2];
-  if (!solveLineAtDistance(ray.origin - center_, ray.direction, radiusSquared_, roots[0], roots[1]))
+  if (!solveLineAtDistance(fromCenter, ray.direction, radiusSquared_, roots[0], roots[1]))
     return false;
   for (float t : roots) {
     if (t > tMin && t < hit.t) {
