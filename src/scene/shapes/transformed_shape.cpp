@@ -13,7 +13,7 @@ TransformedShape::TransformedShape(std::unique_ptr<Shape> shape, const Mat4& wor
 
 Ray TransformedShape::objectRay(const Ray& worldRay) const {
   return Ray{Vec3(objectFromWorld_ * glm::vec4(worldRay.origin, 1.0f)),
-             Mat3(objectFromWorld_) * worldRay.direction};
+             Mat3(objectFromWorld_) * worldRay.direction, worldRay.time};
 }
 
 bool TransformedShape::intersect(const Ray& ray, float tMin, Hit& hit,
