@@ -2,6 +2,7 @@
 
 #include <cstdint>
 
+#include "core/bounds.hpp"
 #include "core/math.hpp"
 #include "core/ray.hpp"
 
@@ -48,6 +49,19 @@ class Shape {
 
   // The point and normal of a hit that this shape recorded.
   virtual SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const = 0;
+
+  // The box the shape stays inside (infinite for the plane).
+  virtual Bounds3 bounds() const { return Bounds3::infinite(); }
+
+  // A shape is made of primitives that an acceleration structure can bound
+  // and test one at a time: a mesh of its triangles, any other shape of
+  // itself alone.
+  virtual int primitiveCount() const { return 1; }
+  virtual Bounds3 primitiveBounds(int /*primitive*/) const { return bounds(); }
+  virtual bool intersectPrimitive(int /*primitive*/, const Ray& ray, float tMin, Hit& hit,
+                                  IntersectionCounters& counters) const {
+    return intersect(ray, tMin, hit, counters);
+  }
 
   // Index of the shape's material in Scene::materials.
   int material() const { return material_; }
