@@ -147,5 +147,55 @@ TEST_F(RiseCommand, ValidatesWithoutRendering) {
   EXPECT_NE(result.output.find("ok"), std::string::npos);
 }
 
+TEST_F(RiseCommand, AModelFileThatCannotBeReadIsBadInput) {
+  // The first 5000 bytes of an MD2 model, which holds 198 keyframes.
+  std::ifstream model(example("models/sydney/sydney.md2"), std::ios::binary);
+  std::string start(5000, '\0');
+  model.read(start.data(), static_cast<std::streamsize>(start.size()));
+  std::ofstream(file("cut.md2"), std::ios::binary) << start;
+  std::ofstream(file("model.yaml")) << "camera: {position: [0, 0, -5], look_at: [0, 0, 0]}\n"
+                                       "materials: {m: {}}\n"
+                                       "objects:\n"
+                                       "  - mesh: {file: cut.md2, material: m}\n";
+  const CommandResult result =
+      runRise("render " + file("model.yaml").string() + " -o " + file("model.png").string());
+  EXPECT_EQ(result.status, 2);
+  EXPECT_EQ(result.output, file("model.yaml").string() +
+                               ":4:18: cannot load mesh 'cut.md2': the file is cut short: its 198 "
+                               "keyframes should end at byte 288824, but it has 5000 bytes\n");
+  EXPECT_FALSE(fs::exists(file("model.png")));
+}
+
+// Brute force opens no bounding volume; the BVH opens boxes.
+TEST_F(RiseCommand, ChoosesTheAccelerationStructure) {
+  for (const std::string accel : {"none", "bvh"}) {
+    const CommandResult result =
+        runRise("render " + example("classic.yaml") + " -o " + file(accel + ".png").string() +
+                " --width 32 --accel " + accel + " --stats " + file(accel + ".json").string());
+    ASSERT_EQ(result.status, 0) << result.output;
+    const auto stats = nlohmann::json::parse(std::ifstream(file(accel + ".json")));
+    EXPECT_GE(stats["accel_build_seconds"].get<double>(), 0.0);
+    EXPECT_EQ(stats["nodes_visited"].get<double>() > 0.0, accel == "bvh");
+  }
+
+  const CommandResult unknown = runRise("render " + example("classic.yaml") + " -o " +
+                                        file("octree.png").string() + " --accel octree");
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.output.find("octree"), std::string::npos) << unknown.output;
+  EXPECT_FALSE(fs::exists(file("octree.png")));
+}
+
+// Without Embree at build time, asking for it is bad input that says what
+// there is instead; with it, it renders.
+TEST_F(RiseCommand, SaysWhichStructuresABuildWithoutEmbreeHas) {
+  const CommandResult result = runRise("render " + example("classic.yaml") + " -o " +
+                                       file("embree.png").string() + " --width 32 --accel embree");
+  if (result.status == 0) GTEST_SKIP() << "this build has Embree";
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("available: none, spheres, bvh"), std::string::npos)
+      << result.output;
+  EXPECT_FALSE(fs::exists(file("embree.png")));
+}
+
 }  // namespace
 }  // namespace rise

@@ -259,7 +259,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "typo_key.yaml:8:7: unknown key 'radus' in sphere; did you mean 'radius'?"},
         BadScene{"unknown_key_far.yaml",
                  "unknown_key_far.yaml:4:33: unknown key 'shininess' in material 'red'; expected "
-                 "one of: color, texture, ka, kd, ks, n, reflection, transmission, ior"},
+                 "one of: color, texture, ka, kd, ks, n, reflection, transmission, ior, roughness"},
         BadScene{"duplicate_key.yaml",
                  "duplicate_key.yaml:2:52: duplicate key 'position' in camera; a key may appear "
                  "only once"},
@@ -333,7 +333,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "unknown_shape.yaml:6:5: unknown shape 'sphre'; did you mean 'sphere'?"},
         BadScene{"unknown_light.yaml",
                  "unknown_light.yaml:4:5: unknown light type 'spot'; expected one of: point, "
-                 "directional"},
+                 "directional, rect, disk, sphere"},
         BadScene{"misindented_object.yaml",
                  "misindented_object.yaml:6:5: an item of 'objects' is a map with the keys "
                  "sphere, center, radius, material; expected a map with one key naming the "

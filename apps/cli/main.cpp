@@ -6,6 +6,8 @@
 // (a scene file error or a wrong option); on status 2 no image is written.
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <iostream>
 #include <iterator>
 #include <sstream>
@@ -36,7 +38,38 @@ struct RenderOptions {
   std::filesystem::path statsPath;
   Encoding encoding = Encoding::Srgb;
   std::vector<std::string> buffers;
+  Accel accel = Accel::Bvh;
+  std::optional<int> samples;  // unset: as the scene says
+  std::optional<SamplePattern> pattern;
+  std::optional<FilterKind> filter;
+  std::optional<float> adaptiveThreshold;
+  std::uint64_t seed = 0;
+  Shading shading = Shading::Phong;
+  bool noCulling = false;
+  int tessellation = 8;
+  float planeSize = 1000.0f;
 };
+
+// The scene's pixel sampling with the command line's choices over it.
+PixelSampling pixelSampling(const RenderOptions& options, const PixelSampling& scene) {
+  PixelSampling sampling = chooseSampling(scene, options.samples, options.pattern);
+  if (options.filter) sampling.filter = *options.filter;
+  if (options.adaptiveThreshold) sampling.adaptiveThreshold = *options.adaptiveThreshold;
+  return sampling;
+}
+
+std::map<std::string, Accel> accelNamesToValues() {
+  std::map<std::string, Accel> names;
+  for (Accel accel : kAllAccels) names.emplace(accelName(accel), accel);
+  return names;
+}
+
+std::string availableAccelNames() {
+  std::string names;
+  for (Accel accel : availableAccels())
+    names += (names.empty() ? "" : ", ") + std::string(accelName(accel));
+  return names;
+}
 
 Scene loadScene(const std::string& path) {
   if (path != "-") return loadSceneFile(path);
@@ -92,6 +125,23 @@ int render(const RenderOptions& options) {
   std::tie(settings.width, settings.height) = imageSize(options, scene.image);
   settings.threads = resolveThreadCount(options.threads);
   settings.maxDepth = options.maxDepth;
+  settings.shading = options.shading;
+  settings.backfaceCulling = !options.noCulling;
+  settings.tessellation = options.tessellation;
+  settings.planeSize = options.planeSize;
+  if (!isAvailable(options.accel)) {
+    std::cerr << "rise: --accel " << accelName(options.accel)
+              << ": this build has no such structure (Embree was not found when it was built); "
+              << "available: " << availableAccelNames() << "\n";
+    return kExitBadInput;
+  }
+  settings.accel = options.accel;
+  settings.sampling = pixelSampling(options, scene.image.sampling);
+  settings.seed = options.seed;
+  if (const std::string problem = samplingProblem(settings.sampling); !problem.empty()) {
+    std::cerr << "rise: " << problem << "\n";
+    return kExitBadInput;
+  }
 
   RenderResult result;
   {
@@ -165,6 +215,54 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
       ->add_option("--max-depth", options.maxDepth,
                    "Longest ray path of the ray tracers; the primary ray is 1")
       ->check(CLI::Range(1, 64));
+  command->add_option("--samples", options.samples,
+                      "Samples a pixel (default: the scene's, or 1); alone, picks jittered")
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--pattern", options.pattern,
+                   "Where the samples go: none, regular, jittered, random or adaptive")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, SamplePattern>{{"none", SamplePattern::None},
+                                               {"regular", SamplePattern::Regular},
+                                               {"jittered", SamplePattern::Jittered},
+                                               {"random", SamplePattern::Random},
+                                               {"adaptive", SamplePattern::Adaptive}},
+          CLI::ignore_case));
+  command
+      ->add_option("--filter", options.filter, "Reconstruction filter: box, tent or gaussian")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, FilterKind>{{"box", FilterKind::Box},
+                                            {"tent", FilterKind::Tent},
+                                            {"gaussian", FilterKind::Gaussian}},
+          CLI::ignore_case));
+  command->add_option("--threshold", options.adaptiveThreshold,
+                      "Adaptive pattern: the corner difference that is refined (default 0.05)")
+      ->check(CLI::PositiveNumber);
+  command->add_option("--seed", options.seed,
+                      "Seed of the random samples: the same seed, the same image");
+  command
+      ->add_option("--accel", options.accel,
+                   "Acceleration structure: none, spheres, bvh (default) or embree")
+      ->transform(CLI::CheckedTransformer(accelNamesToValues(), CLI::ignore_case));
+  command
+      ->add_option("--shading", options.shading,
+                   "Visible-surface algorithms: flat, gouraud or phong (default)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, Shading>{{"flat", Shading::Flat},
+                                         {"gouraud", Shading::Gouraud},
+                                         {"phong", Shading::Phong}},
+          CLI::ignore_case));
+  command->add_flag("--no-cull", options.noCulling,
+                    "Visible-surface algorithms: keep the back faces of solids");
+  command
+      ->add_option("--tessellation", options.tessellation,
+                   "Visible-surface algorithms: a circle becomes 4 x N segments (default 8)")
+      ->check(CLI::Range(1, 256));
+  command
+      ->add_option("--plane-size", options.planeSize,
+                   "Visible-surface algorithms: the side of the square drawn for a plane "
+                   "(default 1000)")
+      ->check(CLI::PositiveNumber);
   command->add_option("--stats", options.statsPath, "Also write the time and counters as JSON");
   command
       ->add_option("--encoding", options.encoding,
@@ -174,9 +272,10 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
           CLI::ignore_case));
   command
       ->add_option("--aov", options.buffers,
-                   "Auxiliary buffers to write beside the image: depth, normal, cost")
+                   "Auxiliary buffers to write beside the image: depth, normal, cost, face "
+                   "(face: the visible-surface algorithms only)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"depth", "normal", "cost"}));
+      ->check(CLI::IsMember({"depth", "normal", "cost", "face"}));
   return command;
 }
 

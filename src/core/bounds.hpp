@@ -28,6 +28,11 @@ struct Bounds3 {
     max = glm::max(max, other.max);
   }
 
+  // Corner 0 is min, corner 7 is max; bit k of the index picks max along axis k.
+  Vec3 corner(int index) const {
+    return {(index & 1) ? max.x : min.x, (index & 2) ? max.y : min.y, (index & 4) ? max.z : min.z};
+  }
+
   Vec3 extent() const { return max - min; }
   Vec3 centre() const { return 0.5f * (min + max); }
   float surfaceArea() const {

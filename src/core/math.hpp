@@ -22,4 +22,6 @@ inline constexpr float kRayEpsilon = 1e-4f;
 
 inline float radians(float degrees) { return degrees * (kPi / 180.0f); }
 
+inline float maxComponent(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
+
 }  // namespace rise

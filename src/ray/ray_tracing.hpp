@@ -1,15 +1,12 @@
 // Whitted ray tracing (T. Whitted, "An improved illumination model for shaded
-// display", CACM 23(6), 1980), as in the original RISE report's Intersect and
-// Shade routines.
+// display", CACM 23(6), 1980), as in the original RISE report.
 //
-// A ray leaves the eye through each pixel and finds the nearest surface. There
-// the Phong model sums the ambient light and each light that a shadow ray
-// finds unblocked; then two new rays carry on recursively: the mirror
-// reflection, weighted by the material's `reflection`, and the ray refracted
-// by Snell's law, weighted by its `transmission` and tinted by its colour
-// (when the angle is past the critical one, total internal reflection sends it
-// along the mirror direction instead). Rays that hit nothing take the
-// background colour; recursion stops at the settings' maximum depth.
+// One ray leaves a pinhole eye through each sample position of a pixel and
+// is traced recursively (see recursive_tracer.hpp): shadows, mirror
+// reflection, refraction. The scene is seen at one instant, the shutter's
+// opening; area lights act as points at their centres and rough materials as
+// smooth ones. Anti-aliasing comes from several samples in each pixel,
+// placed by the render's sample pattern.
 #pragma once
 
 #include "render/renderer.hpp"

@@ -16,7 +16,8 @@ constexpr Color kBackground{0.2f, 0.3f, 0.4f};
 // pixel's ray runs exactly along +z.
 Scene emptyScene() {
   Scene scene;
-  scene.image = {9, 9, kBackground};
+  scene.image.width = scene.image.height = 9;
+  scene.image.background = kBackground;
   scene.camera.position = {0.0f, 0.0f, -5.0f};
   scene.camera.lookAt = {0.0f, 0.0f, 0.0f};
   scene.camera.fovDegrees = 40.0f;
@@ -34,6 +35,7 @@ RenderResult render(const Scene& scene, int maxDepth = 5, int threads = 1) {
   settings.height = scene.image.height;
   settings.maxDepth = maxDepth;
   settings.threads = threads;
+  settings.accel = Accel::None;  // one test per shape per ray: counters easy to predict
   RenderObserver observer;
   return WhittedRayTracer().render(scene, settings, observer);
 }

@@ -1,26 +1,65 @@
 #include "ray/scene_intersector.hpp"
 
-namespace rise {
+#include <algorithm>
+#include <chrono>
 
-bool SceneIntersector::nearest(const Ray& ray, float tMin, Hit& hit,
-                               IntersectionCounters& counters) const {
-  bool found = false;
-  for (const auto& shape : scene_.shapes) found |= shape->intersect(ray, tMin, hit, counters);
-  return found;
+namespace rise {
+namespace {
+
+// The shapes a shadow ray crosses: the first opaque one ends the search; the
+// transparent ones are each kept once, however many of their triangles the
+// ray crosses.
+class ShadowCrossings final : public CrossingVisitor {
+ public:
+  explicit ShadowCrossings(const Scene& scene) : scene_(scene) {}
+
+  bool crossed(int shape) override {
+    if (!scene_.materialOf(*scene_.shapes[shape]).isTransparent()) {
+      blocked_ = true;
+      return false;
+    }
+    if (std::find(filters_.begin(), filters_.end(), shape) == filters_.end())
+      filters_.push_back(shape);
+    return true;
+  }
+
+  // The filters multiplied in the scene's order, so that every structure,
+  // whatever order it found them in, gives the same bits.
+  Color transmittance() {
+    if (blocked_) return Color(0.0f);
+    std::sort(filters_.begin(), filters_.end());
+    Color through(1.0f);
+    for (int shape : filters_) {
+      const Material& material = scene_.materialOf(*scene_.shapes[shape]);
+      through *= material.transmission * material.color;
+    }
+    return through;
+  }
+
+ private:
+  const Scene& scene_;
+  bool blocked_ = false;
+  std::vector<int> filters_;
+};
+
+}  // namespace
+
+SceneIntersector::SceneIntersector(const Scene& scene, Accel accel, int threads) : scene_(scene) {
+  const auto start = std::chrono::steady_clock::now();
+  accelerator_ = buildAccelerator(accel, scene.shapes, threads);
+  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+  buildSeconds_ = seconds.count();
 }
 
 Color SceneIntersector::transmittance(const Ray& ray, float tMin, float tMax,
                                       IntersectionCounters& counters) const {
-  Color through(1.0f);
-  for (const auto& shape : scene_.shapes) {
-    Hit blocker;
-    blocker.t = tMax;
-    if (!shape->intersect(ray, tMin, blocker, counters)) continue;
-    const Material& material = scene_.materialOf(*shape);
-    if (!material.isTransparent()) return Color(0.0f);
-    through *= material.transmission * material.color;
-  }
-  return through;
+  ShadowCrossings crossings(scene_);
+  accelerator_->visitCrossings(ray, tMin, tMax, crossings, counters);
+  return crossings.transmittance();
+}
+
+void SceneIntersector::addBuildStats(Stats& stats) const {
+  stats.add("accel_build_seconds", buildSeconds_);
 }
 
 }  // namespace rise

@@ -1,27 +1,42 @@
 #pragma once
 
+#include <memory>
+
+#include "core/stats.hpp"
+#include "ray/accelerator.hpp"
 #include "scene/scene.hpp"
 
 namespace rise {
 
 // Answers the two questions a ray tracer asks of a scene: what does this ray
-// hit first, and how much light gets through along this segment. It tests
-// every shape in turn, as the original RISE did before bounding volumes.
+// hit first, and how much light gets through along this segment. It builds
+// the chosen acceleration structure once, when it is made, and asks it both;
+// whichever structure it is, the answers are the same.
 class SceneIntersector {
  public:
-  explicit SceneIntersector(const Scene& scene) : scene_(scene) {}
+  // Builds on `threads` threads (0: one per core). Throws
+  // std::invalid_argument when this build does not have `accel`.
+  SceneIntersector(const Scene& scene, Accel accel, int threads = 0);
 
   // The nearest hit with t > tMin, or false when the ray escapes.
-  bool nearest(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& counters) const;
+  bool nearest(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& counters) const {
+    return accelerator_->nearest(ray, tMin, hit, counters);
+  }
 
   // The fraction of light that travels along `ray` from t = tMin to t = tMax:
   // zero if an opaque shape is in the way; each transparent shape on the way
   // filters it once by its transmission times its colour. Shadow rays are not
-  // refracted, so glass casts a lighter shadow, not a caustic.
+  // refracted, so glass casts a lighter shadow, not a caustic. The search
+  // stops at the first opaque shape found.
   Color transmittance(const Ray& ray, float tMin, float tMax, IntersectionCounters& counters) const;
+
+  // "accel_build_seconds": how long building the structure took.
+  void addBuildStats(Stats& stats) const;
 
  private:
   const Scene& scene_;
+  std::unique_ptr<Accelerator> accelerator_;
+  double buildSeconds_ = 0.0;
 };
 
 }  // namespace rise

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -68,14 +69,33 @@ Image visualizeCost(const Image& raw) {
   });
 }
 
+// A bright colour for each face number: the bits of a hash of the number
+// (Wang's integer hash) become the three channels.
+Image visualizeFace(const Image& raw) {
+  return mapPixels(raw, [](const Color& face) {
+    if (face.r < 0.0f) return Color(0.0f);
+    auto hash = static_cast<std::uint32_t>(face.r);
+    hash = (hash ^ 61u) ^ (hash >> 16);
+    hash *= 9u;
+    hash ^= hash >> 4;
+    hash *= 0x27d4eb2du;
+    hash ^= hash >> 15;
+    const auto channel = [&](int shift) {
+      return 0.25f + 0.75f * static_cast<float>((hash >> shift) & 0xffu) / 255.0f;
+    };
+    return Color(channel(0), channel(8), channel(16));
+  });
+}
+
 }  // namespace
 
 Image visualizeBuffer(std::string_view name, const Image& raw) {
   if (name == "depth") return visualizeDepth(raw);
   if (name == "normal") return visualizeNormal(raw);
   if (name == "cost") return visualizeCost(raw);
+  if (name == "face") return visualizeFace(raw);
   throw std::invalid_argument("unknown buffer '" + std::string(name) +
-                              "' (known: depth, normal, cost)");
+                              "' (known: depth, normal, cost, face)");
 }
 
 }  // namespace rise

@@ -20,6 +20,8 @@ namespace rise {
 //           then cyan, green, yellow and red to dark red for the dearest.
 //           Turbo: A. Mikhailov, "Turbo, An Improved Rainbow Colormap for
 //           Visualization", Google AI Blog, 2019, in R. Du's polynomial fit.
+//  "face"   each face number as a colour of its own, picked by hashing the
+//           number, so that neighbouring faces differ; no face (-1) black.
 // Throws std::invalid_argument for any other name.
 Image visualizeBuffer(std::string_view name, const Image& raw);
 

@@ -1,15 +1,31 @@
 #include "render/registry.hpp"
 
-#include <array>
 #include <chrono>
 
+#include "raster/area_subdivision.hpp"
+#include "raster/depth_sort.hpp"
+#include "raster/scanline.hpp"
+#include "raster/z_buffer.hpp"
+#include "ray/distributed_ray_tracing.hpp"
 #include "ray/ray_tracing.hpp"
 
 namespace rise {
 
 std::span<const Renderer* const> allRenderers() {
+  static const DepthSortRenderer depthSort;
+  static const AreaSubdivisionRenderer areaSubdivision;
+  static const ZBufferRenderer zBuffer;
+  static const ScanlineRenderer scanline;
   static const WhittedRayTracer rayTracing;
-  static const std::array<const Renderer*, 1> table = {&rayTracing};
+  static const DistributedRayTracer distributedRayTracing;
+  static const Renderer* const table[] = {
+      &depthSort,
+      &areaSubdivision,
+      &zBuffer,
+      &scanline,
+      &rayTracing,
+      &distributedRayTracing,
+  };
   return table;
 }
 

@@ -5,10 +5,17 @@
 #include <string_view>
 
 #include "core/image.hpp"
+#include "core/sampling.hpp"
 #include "core/stats.hpp"
+#include "ray/accelerator.hpp"
 #include "scene/scene.hpp"
 
 namespace rise {
+
+// How the visible-surface algorithms apply the Phong model to their polygons:
+// once per face, at the vertices with the colours interpolated (Gouraud), or
+// at every pixel with the normals interpolated (Phong).
+enum class Shading { Flat, Gouraud, Phong };
 
 // How to render, whatever the algorithm. The image size comes from the scene
 // unless the command line overrides it.
@@ -17,13 +24,27 @@ struct RenderSettings {
   int height = 480;
   int maxDepth = 5;  // longest path of a ray tracer: the primary ray is level 1
   int threads = 0;   // 0: one per hardware thread
+  PixelSampling sampling;     // samples per pixel, their pattern, the reconstruction filter
+  std::uint64_t seed = 0;     // the same seed gives the same image; another, other noise
+  Accel accel = Accel::Bvh;   // the acceleration structure of the ray tracers
+  // The visible-surface algorithms (raster/): their shading, whether they
+  // drop the back faces of solids, how finely they cut curved surfaces into
+  // polygons (a circle into 4 * tessellation segments), and the side of the
+  // square that stands in for an infinite plane.
+  Shading shading = Shading::Phong;
+  bool backfaceCulling = true;
+  int tessellation = 8;
+  float planeSize = 1000.0f;
 };
 
 // What every algorithm returns: the image (linear colours), the auxiliary
 // buffers (AOVs) that show what happened at each pixel, and the statistics.
 // Buffers hold raw values: "depth" the distance along the primary ray in
 // every channel (infinite where nothing was hit), "normal" the unit surface
-// normal, "cost" the number of intersection tests made for the pixel.
+// normal, "cost" the number of intersection tests made for the pixel (the
+// visible-surface algorithms: the work they spent on it, see
+// raster/visible_surface_renderer.hpp), "face" the number of the polygon seen
+// there (-1 where none is).
 struct RenderResult {
   Image image;
   std::map<std::string, Image, std::less<>> buffers;

@@ -2,10 +2,17 @@
 
 #include <cmath>
 
+#include "core/sampling.hpp"
+
 namespace rise {
 
 ViewFrame::ViewFrame(const Camera& camera, int width, int height)
-    : eye_(camera.position), width_(width), height_(height) {
+    : eye_(camera.position),
+      width_(width),
+      height_(height),
+      lensRadius_(0.5f * camera.aperture),
+      focalDistance_(camera.focalDistance > 0.0f ? camera.focalDistance
+                                                 : glm::length(camera.lookAt - camera.position)) {
   forward_ = glm::normalize(camera.lookAt - camera.position);
   // A right-handed world seen from behind the eye: x to the right, y up,
   // looking along forward.
@@ -19,6 +26,15 @@ Ray ViewFrame::primaryRay(float x, float y) const {
   const float sx = (2.0f * x / static_cast<float>(width_) - 1.0f) * halfWidth_;
   const float sy = (1.0f - 2.0f * y / static_cast<float>(height_)) * halfHeight_;
   return Ray{eye_, glm::normalize(forward_ + sx * right_ + sy * up_)};
+}
+
+Ray ViewFrame::thinLensRay(const Vec2& raster, const Vec2& lens) const {
+  const Ray pinhole = primaryRay(raster.x, raster.y);
+  if (lensRadius_ == 0.0f) return pinhole;
+  const Vec3 inFocus = pinhole.at(focalDistance_ / glm::dot(pinhole.direction, forward_));
+  const Vec2 onLens = lensRadius_ * squareToDisk(lens);
+  const Vec3 origin = eye_ + onLens.x * right_ + onLens.y * up_;
+  return Ray{origin, glm::normalize(inFocus - origin)};
 }
 
 }  // namespace rise

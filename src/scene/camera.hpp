@@ -6,12 +6,20 @@
 namespace rise {
 
 // The viewer, as in the scene file: where it stands, where it looks, which way
-// is up, and the vertical field of view.
+// is up, and the vertical field of view; then what a real camera adds (Cook,
+// Porter & Carpenter 1984): a lens of some diameter focused at some distance,
+// and a shutter open for an interval of time.
 struct Camera {
   Vec3 position{0.0f, 0.0f, -5.0f};
   Vec3 lookAt{0.0f};
   Vec3 up{0.0f, 1.0f, 0.0f};
   float fovDegrees = 50.0f;
+  float aperture = 0.0f;       // the lens's diameter; 0 is a pinhole, everything sharp
+  float focalDistance = 0.0f;  // from the eye to the plane in focus; 0: the look_at point's
+  float shutterOpen = 0.0f;
+  float shutterClose = 0.0f;   // equal to shutterOpen: an instant, no motion blur
+
+  bool hasMotionBlur() const { return shutterClose > shutterOpen; }
 };
 
 // The camera's orthonormal frame for an image of a given size (the textbook's
@@ -27,6 +35,14 @@ class ViewFrame {
   // bottom-right, so pixel (i, j)'s centre is (i + 0.5, j + 0.5).
   Ray primaryRay(float x, float y) const;
 
+  // The ray through the raster position `raster` of a thin lens (Cook et
+  // al. 1984): it leaves the lens at the point chosen by the sample `lens`
+  // in the unit square and passes through the point that the pinhole ray
+  // meets on the plane in focus, so that points on that plane stay sharp and
+  // others blur with their distance from it. With no aperture it is the
+  // pinhole ray.
+  Ray thinLensRay(const Vec2& raster, const Vec2& lens) const;
+
   const Vec3& eye() const { return eye_; }
   const Vec3& right() const { return right_; }
   const Vec3& up() const { return up_; }
@@ -40,6 +56,8 @@ class ViewFrame {
   Vec3 eye_, right_, up_, forward_;
   float halfWidth_, halfHeight_;
   int width_, height_;
+  float lensRadius_;
+  float focalDistance_;
 };
 
 }  // namespace rise

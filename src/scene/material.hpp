@@ -21,6 +21,11 @@ struct Material {
   float reflection = 0.0f;    // weight of the mirror-reflected ray
   float transmission = 0.0f;  // weight of the refracted ray, tinted by C
   float ior = 1.0f;           // index of refraction of the interior (outside is 1)
+  // Gloss and translucency (Cook et al. 1984): how far the distributed ray
+  // tracer spreads reflected and refracted rays around their ideal
+  // directions, as the tangent of the spread's half-angle. 0 is a perfect
+  // mirror or clear glass.
+  float roughness = 0.0f;
 
   std::shared_ptr<const Texture> texture;  // when set, replaces color over the surface
 

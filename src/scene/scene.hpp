@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/color.hpp"
+#include "core/sampling.hpp"
 #include "scene/camera.hpp"
 #include "scene/light.hpp"
 #include "scene/material.hpp"
@@ -17,6 +18,7 @@ struct ImageSpec {
   int width = 640;
   int height = 480;
   Color background{0.0f};  // the colour of rays that hit nothing
+  PixelSampling sampling;  // anti-aliasing: samples per pixel, their pattern, the filter
 };
 
 // Everything that is rendered: what the scene file describes, validated and

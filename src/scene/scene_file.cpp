@@ -6,6 +6,7 @@
 #include <array>
 #include <cerrno>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <optional>
@@ -15,10 +16,13 @@
 #include <utility>
 #include <vector>
 
+#include "scene/mesh_file.hpp"
 #include "scene/shapes/box.hpp"
 #include "scene/shapes/cone.hpp"
 #include "scene/shapes/convex_polygon.hpp"
 #include "scene/shapes/cylinder.hpp"
+#include "scene/shapes/keyframed_mesh.hpp"
+#include "scene/shapes/moving_shape.hpp"
 #include "scene/shapes/plane.hpp"
 #include "scene/shapes/sphere.hpp"
 #include "scene/shapes/transformed_shape.hpp"
@@ -49,12 +53,57 @@ float readNonNegative(const Field& field) { return readNumber(field, Bound::NonN
 float readPositive(const Field& field) { return readNumber(field, Bound::Positive); }
 int readPositiveWholeNumber(const Field& field) { return readWholeNumber(field, Bound::Positive); }
 
+// One of a fixed set of names, with a suggestion for a misspelt one.
+template <typename Choice>
+Choice readChoice(const Field& field, const std::vector<std::pair<std::string, Choice>>& choices) {
+  const std::string name = readName(field);
+  std::vector<std::string> names;
+  for (const auto& [choiceName, choice] : choices) {
+    if (choiceName == name) return choice;
+    names.push_back(choiceName);
+  }
+  failAt(field.mark, field.name + " is '" + name + "'; " + suggestAlternative(name, names));
+}
+
+SamplePattern readPattern(const Field& field) {
+  return readChoice<SamplePattern>(field, {{"none", SamplePattern::None},
+                                           {"regular", SamplePattern::Regular},
+                                           {"jittered", SamplePattern::Jittered},
+                                           {"random", SamplePattern::Random},
+                                           {"adaptive", SamplePattern::Adaptive}});
+}
+
+FilterKind readFilter(const Field& field) {
+  return readChoice<FilterKind>(field, {{"box", FilterKind::Box},
+                                        {"tent", FilterKind::Tent},
+                                        {"gaussian", FilterKind::Gaussian}});
+}
+
+PixelSampling readSampling(const CheckedMap& image, const Field& imageField) {
+  const std::optional<Field> samplesField = image.optional("samples");
+  const std::optional<Field> patternField = image.optional("pattern");
+  std::optional<int> samples;
+  std::optional<SamplePattern> pattern;
+  if (samplesField) samples = readPositiveWholeNumber(*samplesField);
+  if (patternField) pattern = readPattern(*patternField);
+  PixelSampling sampling = chooseSampling(PixelSampling{}, samples, pattern);
+  readIfPresent(image, "filter", sampling.filter, readFilter);
+  readIfPresent(image, "adaptive_threshold", sampling.adaptiveThreshold, readPositive);
+  if (const std::string problem = samplingProblem(sampling); !problem.empty())
+    failAt((samplesField ? *samplesField : patternField ? *patternField : imageField).mark,
+           "image has " + problem);
+  return sampling;
+}
+
 ImageSpec readImage(const Field& field) {
-  const CheckedMap image(field, "image", {"width", "height", "background"});
+  const CheckedMap image(field, "image",
+                         {"width", "height", "background", "samples", "pattern", "filter",
+                          "adaptive_threshold"});
   ImageSpec spec;
   readIfPresent(image, "width", spec.width, readPositiveWholeNumber);
   readIfPresent(image, "height", spec.height, readPositiveWholeNumber);
   readIfPresent(image, "background", spec.background, readColor);
+  spec.sampling = readSampling(image, field);
   return spec;
 }
 
@@ -70,7 +119,8 @@ void checkUpIsAcrossView(const Camera& camera, const std::optional<Field>& up,
 }
 
 Camera readCamera(const Field& field) {
-  const CheckedMap map(field, "camera", {"position", "look_at", "up", "fov"});
+  const CheckedMap map(field, "camera",
+                       {"position", "look_at", "up", "fov", "aperture", "focal_distance", "shutter"});
   Camera camera;
   camera.position = readVec3(map.required("position"));
   const Field lookAt = map.required("look_at");
@@ -86,6 +136,16 @@ Camera readCamera(const Field& field) {
     camera.fovDegrees = readNumber(*fov);
     if (camera.fovDegrees <= 0.0f || camera.fovDegrees >= 180.0f)
       failExpected(*fov, "an angle in degrees > 0 and < 180");
+  }
+  readIfPresent(map, "aperture", camera.aperture, readNonNegative);
+  readIfPresent(map, "focal_distance", camera.focalDistance, readPositive);
+  if (const std::optional<Field> shutter = map.optional("shutter")) {
+    const std::vector<Field> times =
+        readList(*shutter, "a list of 2 times [open, close]", "a time of 'shutter'", 2, 2);
+    camera.shutterOpen = readNumber(times[0]);
+    camera.shutterClose = readNumber(times[1]);
+    if (camera.shutterClose < camera.shutterOpen)
+      failExpected(times[1], "a closing time no earlier than the opening time");
   }
   return camera;
 }
@@ -111,18 +171,61 @@ Color readLightColor(const CheckedMap& light) {
   return color;
 }
 
+// Each light reader builds its light from its properties.
+using LightReader = std::unique_ptr<Light> (*)(const CheckedMap& properties, const Color& color);
+
+struct LightKind {
+  std::string name;
+  std::vector<std::string> keys;
+  LightReader read;
+};
+
+const std::vector<LightKind>& lightKinds() {
+  static const std::vector<LightKind> kinds{
+      {"point", {"position"},
+       [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
+         return std::make_unique<PointLight>(readVec3(light.required("position")), color);
+       }},
+      {"directional", {"direction"},
+       [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
+         return std::make_unique<DirectionalLight>(readDirection(light.required("direction")),
+                                                   color);
+       }},
+      {"rect", {"corner", "edge1", "edge2"},
+       [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
+         const Vec3 corner = readVec3(light.required("corner"));
+         const Vec3 edge1 = readDirection(light.required("edge1"));
+         return std::make_unique<RectLight>(corner, edge1, readDirection(light.required("edge2")),
+                                            color);
+       }},
+      {"disk", {"center", "normal", "radius"},
+       [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
+         const Vec3 center = readVec3(light.required("center"));
+         const Vec3 normal = readDirection(light.required("normal"));
+         return std::make_unique<DiskLight>(center, normal,
+                                            readPositive(light.required("radius")), color);
+       }},
+      {"sphere", {"center", "radius"},
+       [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
+         const Vec3 center = readVec3(light.required("center"));
+         return std::make_unique<SphereLight>(center, readPositive(light.required("radius")),
+                                              color);
+       }},
+  };
+  return kinds;
+}
+
 std::unique_ptr<Light> readLight(const Field& item) {
-  const MapEntry entry = readKindAndProperties(item, "light type", {"point", "directional"});
+  std::vector<std::string> kindNames;
+  for (const LightKind& kind : lightKinds()) kindNames.push_back(kind.name);
+  const MapEntry entry = readKindAndProperties(item, "light type", kindNames);
+  const LightKind& kind = *std::find_if(lightKinds().begin(), lightKinds().end(),
+                                        [&](const LightKind& k) { return k.name == entry.key; });
   const std::string name = entry.key + " light";
-  const bool isPoint = entry.key == "point";
-  const CheckedMap light(makeField(entry.value, name, entry.keyMark), name,
-                         {isPoint ? "position" : "direction", "color"});
-  if (isPoint) {
-    const Vec3 position = readVec3(light.required("position"));
-    return std::make_unique<PointLight>(position, readLightColor(light));
-  }
-  const Vec3 direction = readDirection(light.required("direction"));
-  return std::make_unique<DirectionalLight>(direction, readLightColor(light));
+  std::vector<std::string> keys = kind.keys;
+  keys.push_back("color");
+  const CheckedMap light(makeField(entry.value, name, entry.keyMark), name, keys);
+  return kind.read(light, readLightColor(light));
 }
 
 // "texture: {checker: {colors: [[1, 1, 1], [0, 0, 0]], size: 1}}".
@@ -141,7 +244,8 @@ Material readMaterial(const MapEntry& entry) {
   const std::string name = "material '" + entry.key + "'";
   const CheckedMap map(
       makeField(entry.value, name, entry.keyMark), name,
-      {"color", "texture", "ka", "kd", "ks", "n", "reflection", "transmission", "ior"});
+      {"color", "texture", "ka", "kd", "ks", "n", "reflection", "transmission", "ior",
+       "roughness"});
   Material material;
   material.name = entry.key;
   readIfPresent(map, "color", material.color, readColor);
@@ -153,6 +257,7 @@ Material readMaterial(const MapEntry& entry) {
   readIfPresent(map, "reflection", material.reflection, readNonNegative);
   readIfPresent(map, "transmission", material.transmission, readNonNegative);
   readIfPresent(map, "ior", material.ior, readPositive);
+  readIfPresent(map, "roughness", material.roughness, readNonNegative);
   return material;
 }
 
@@ -185,10 +290,11 @@ Vec3 readScale(const Field& field) {
   return scale;
 }
 
-TransformSpec readTransform(const Field& field, std::string_view shapeName) {
-  const CheckedMap map(field, "the transform of " + std::string(shapeName),
-                       {"scale", "rotate", "translate"});
-  TransformSpec spec;
+// A `transform`, or a `motion`: the placement at the shutter's close, its
+// keys changing those of `start`, the placement at the shutter's open.
+TransformSpec readPlacement(const Field& field, const std::string& name, TransformSpec start) {
+  const CheckedMap map(field, name, {"scale", "rotate", "translate"});
+  TransformSpec spec = start;
   readIfPresent(map, "scale", spec.scale, readScale);
   readIfPresent(map, "rotate", spec.rotateDegrees, readVec3);
   readIfPresent(map, "translate", spec.translate, readVec3);
@@ -208,23 +314,28 @@ std::vector<Vec3> readPoints(const Field& field, std::string_view expectation,
 
 // Each shape reader builds its shape from its properties. Shapes made of
 // vertices take the object's transform into them; the others are built in
-// their own space and wrapped in a TransformedShape.
+// their own space and wrapped in a TransformedShape. Files that a shape names
+// are found from the scene file's folder.
 using ShapeReader = std::unique_ptr<Shape> (*)(const CheckedMap& properties, int material,
-                                               const Mat4& worldFromObject);
+                                               const Mat4& worldFromObject,
+                                               const std::filesystem::path& sceneDirectory);
 
-std::unique_ptr<Shape> readPlane(const CheckedMap& plane, int material, const Mat4&) {
+std::unique_ptr<Shape> readPlane(const CheckedMap& plane, int material, const Mat4&,
+                                 const std::filesystem::path&) {
   const Vec3 point = readVec3(plane.required("point"));
   const Vec3 normal = readDirection(plane.required("normal"));
   return std::make_unique<Plane>(point, normal, material);
 }
 
-std::unique_ptr<Shape> readSphere(const CheckedMap& sphere, int material, const Mat4&) {
+std::unique_ptr<Shape> readSphere(const CheckedMap& sphere, int material, const Mat4&,
+                                  const std::filesystem::path&) {
   const Vec3 center = readVec3(sphere.required("center"));
   const float radius = readPositive(sphere.required("radius"));
   return std::make_unique<Sphere>(center, radius, material);
 }
 
-std::unique_ptr<Shape> readBox(const CheckedMap& box, int material, const Mat4&) {
+std::unique_ptr<Shape> readBox(const CheckedMap& box, int material, const Mat4&,
+                               const std::filesystem::path&) {
   const Field minField = box.required("min");
   const Field maxField = box.required("max");
   const Vec3 min = readVec3(minField);
@@ -237,7 +348,8 @@ std::unique_ptr<Shape> readBox(const CheckedMap& box, int material, const Mat4&)
 
 // Cylinders and cones: a base point, an axis, a radius and a height.
 template <typename AxialShape>
-std::unique_ptr<Shape> readAxialShape(const CheckedMap& shape, int material, const Mat4&) {
+std::unique_ptr<Shape> readAxialShape(const CheckedMap& shape, int material, const Mat4&,
+                                      const std::filesystem::path&) {
   const Vec3 base = readVec3(shape.required("base"));
   const Vec3 axis = readDirection(shape.required("axis"));
   const float radius = readPositive(shape.required("radius"));
@@ -246,7 +358,7 @@ std::unique_ptr<Shape> readAxialShape(const CheckedMap& shape, int material, con
 }
 
 std::unique_ptr<Shape> readTriangle(const CheckedMap& triangle, int material,
-                                    const Mat4& worldFromObject) {
+                                    const Mat4& worldFromObject, const std::filesystem::path&) {
   const Field field = triangle.required("vertices");
   const std::vector<Vec3> v =
       readPoints(field, "a list of 3 points [x, y, z]", 3, 3, worldFromObject);
@@ -259,7 +371,7 @@ std::unique_ptr<Shape> readTriangle(const CheckedMap& triangle, int material,
 }
 
 std::unique_ptr<Shape> readPolygon(const CheckedMap& polygon, int material,
-                                   const Mat4& worldFromObject) {
+                                   const Mat4& worldFromObject, const std::filesystem::path&) {
   const Field field = polygon.required("vertices");
   std::vector<Vec3> vertices =
       readPoints(field, "a list of 3 or more points [x, y, z]", 3, SIZE_MAX, worldFromObject);
@@ -285,7 +397,9 @@ void appendFan(const Field& face, int vertexCount, std::vector<std::array<int, 3
     triangles.push_back({indices[0], indices[i], indices[i + 1]});
 }
 
-std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4& worldFromObject) {
+// "mesh: {vertices: [[x, y, z], ...], faces: [[0, 1, 2], ...]}".
+std::unique_ptr<Shape> readInlineMesh(const CheckedMap& mesh, int material,
+                                      const Mat4& worldFromObject) {
   std::vector<Vec3> vertices =
       readPoints(mesh.required("vertices"), "a list of 3 or more points [x, y, z]", 3, SIZE_MAX,
                  worldFromObject);
@@ -295,6 +409,78 @@ std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4
            faces, "a list of faces, each a list of 3 or more vertex indices", "a face of mesh", 1))
     appendFan(face, static_cast<int>(vertices.size()), triangles);
   return std::make_unique<TriangleMesh>(std::move(vertices), std::move(triangles), material);
+}
+
+void checkKeyframesExist(const std::vector<Field>& fields, const std::vector<int>& keyframes,
+                         int keyframeCount, const std::string& fileName) {
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    if (keyframes[i] >= keyframeCount)
+      failExpected(fields[i], "a keyframe from 0 to " + std::to_string(keyframeCount - 1) +
+                                  ", as '" + fileName + "' has " + std::to_string(keyframeCount));
+  }
+}
+
+// "mesh: {file: models/x.obj}": a model file, found from the scene file's
+// folder. An MD2 model takes the pose of one keyframe, "frame: 40" (the first
+// by default), or moves between two while the shutter is open,
+// "frames: [40, 41]".
+std::unique_ptr<Shape> readMeshFile(const CheckedMap& mesh, const Field& file, int material,
+                                    const Mat4& worldFromObject,
+                                    const std::filesystem::path& sceneDirectory) {
+  const std::string fileName = readName(file);
+  const std::filesystem::path path = sceneDirectory / fileName;
+  const std::optional<Field> frame = mesh.optional("frame");
+  const std::optional<Field> frames = mesh.optional("frames");
+  if (frame && frames)
+    failAt(frames->mark, "mesh has both 'frame' and 'frames'; expected one of them");
+  std::vector<Field> keyframeFields;
+  if (frame) keyframeFields.push_back(*frame);
+  if (frames)
+    keyframeFields = readList(*frames, "a list of 2 keyframes [first, second]",
+                              "a keyframe of 'frames' in mesh", 2, 2);
+  if (const std::optional<Field>& posing = frame ? frame : frames; posing && !isMd2File(path))
+    failAt(posing->mark, posing->name + " picks keyframes of an MD2 model; '" + fileName +
+                             "' is not an MD2 file");
+  std::vector<int> keyframes;
+  for (const Field& field : keyframeFields)
+    keyframes.push_back(readWholeNumber(field, Bound::NonNegative));
+
+  try {
+    if (!keyframes.empty())
+      checkKeyframesExist(keyframeFields, keyframes, md2KeyframeCount(path), fileName);
+    if (keyframes.size() == 2) {
+      auto [start, end] = loadMd2Keyframes(path, keyframes[0], keyframes[1]);
+      return std::make_unique<KeyframedMesh>(transformed(std::move(start), worldFromObject),
+                                             transformed(std::move(end), worldFromObject),
+                                             material);
+    }
+    MeshGeometry model = loadMeshFile(path, keyframes.empty() ? 0 : keyframes[0]);
+    return std::make_unique<TriangleMesh>(transformed(std::move(model), worldFromObject), material);
+  } catch (const MeshFileError& error) {
+    failAt(file.mark, "cannot load mesh '" + fileName + "': " + error.what());
+  }
+}
+
+// A mesh is either read from a model file or written out in the scene.
+std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4& worldFromObject,
+                                const std::filesystem::path& sceneDirectory) {
+  const std::optional<Field> file = mesh.optional("file");
+  const std::optional<Field> vertices = mesh.optional("vertices");
+  const std::optional<Field> faces = mesh.optional("faces");
+  if (file && (vertices || faces))
+    failAt(file->mark, std::string("mesh has both 'file' and '") +
+                           (vertices ? "vertices" : "faces") +
+                           "'; expected either a model 'file' or 'vertices' and 'faces'");
+  if (file) return readMeshFile(mesh, *file, material, worldFromObject, sceneDirectory);
+  if (!vertices && !faces)
+    failAt(mesh.mark(), "mesh needs either 'file' or 'vertices' and 'faces'");
+  for (const std::string_view key : {"frame", "frames"}) {
+    if (const std::optional<Field> field = mesh.optional(key))
+      failAt(field->mark, field->name +
+                              " picks keyframes of an MD2 model; expected it with a "
+                              "'file', not with 'vertices' and 'faces'");
+  }
+  return readInlineMesh(mesh, material, worldFromObject);
 }
 
 struct ShapeKind {
@@ -313,12 +499,13 @@ const std::vector<ShapeKind>& shapeKinds() {
       {"cone", {"base", "axis", "radius", "height"}, false, readAxialShape<Cone>},
       {"triangle", {"vertices"}, true, readTriangle},
       {"polygon", {"vertices"}, true, readPolygon},
-      {"mesh", {"vertices", "faces"}, true, readMesh},
+      {"mesh", {"vertices", "faces", "file", "frame", "frames"}, true, readMesh},
   };
   return kinds;
 }
 
-std::unique_ptr<Shape> readObject(const Field& item, const std::vector<Material>& materials) {
+std::unique_ptr<Shape> readObject(const Field& item, const std::vector<Material>& materials,
+                                  const std::filesystem::path& sceneDirectory) {
   std::vector<std::string> kindNames;
   for (const ShapeKind& kind : shapeKinds()) kindNames.push_back(kind.name);
   const MapEntry entry = readKindAndProperties(item, "shape", kindNames);
@@ -326,16 +513,22 @@ std::unique_ptr<Shape> readObject(const Field& item, const std::vector<Material>
                                         [&](const ShapeKind& k) { return k.name == entry.key; });
 
   std::vector<std::string> keys = kind.keys;
-  keys.insert(keys.end(), {"material", "transform"});
+  keys.insert(keys.end(), {"material", "transform", "motion"});
   const CheckedMap properties(makeField(entry.value, kind.name, entry.keyMark), kind.name, keys);
   const int material = readMaterialReference(properties.required("material"), materials, kind.name);
   TransformSpec transform;
   if (const std::optional<Field> field = properties.optional("transform"))
-    transform = readTransform(*field, kind.name);
+    transform = readPlacement(*field, "the transform of " + kind.name, TransformSpec{});
+  if (const std::optional<Field> field = properties.optional("motion")) {
+    const TransformSpec close = readPlacement(*field, "the motion of " + kind.name, transform);
+    return std::make_unique<MovingShape>(
+        kind.read(properties, material, Mat4(1.0f), sceneDirectory), transform, close);
+  }
 
   const Mat4 toWorld = worldFromObject(transform);
-  if (kind.takesTransformIntoVertices) return kind.read(properties, material, toWorld);
-  std::unique_ptr<Shape> shape = kind.read(properties, material, Mat4(1.0f));
+  if (kind.takesTransformIntoVertices)
+    return kind.read(properties, material, toWorld, sceneDirectory);
+  std::unique_ptr<Shape> shape = kind.read(properties, material, Mat4(1.0f), sceneDirectory);
   if (transform.isIdentity()) return shape;
   return std::make_unique<TransformedShape>(std::move(shape), toWorld);
 }
@@ -355,7 +548,8 @@ Scene readScene(const YAML::Node& root, std::string source) {
   readIfPresent(map, "materials", scene.materials, readMaterials);
   for (const Field& item :
        readList(map.required("objects"), "a list of objects", "an item of 'objects'"))
-    scene.shapes.push_back(readObject(item, scene.materials));
+    scene.shapes.push_back(
+        readObject(item, scene.materials, std::filesystem::path(scene.source).parent_path()));
   return scene;
 }
 

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "core/bounds.hpp"
 #include "core/math.hpp"
 #include "core/ray.hpp"
+#include "scene/tessellation.hpp"
 
 namespace rise {
 
@@ -23,17 +25,33 @@ struct Hit {
 
 // The surface at a hit: its point, its unit geometric normal, pointing out of
 // the solid (or, for a triangle or polygon, to the side its vertices wind
-// counter-clockwise around), and its texture coordinates.
+// counter-clockwise around), its texture coordinates, and the unit normal that
+// shading uses. The shading normal is the geometric one, except on a mesh with
+// vertex normals, where it is interpolated across each triangle so that the
+// facets do not show (Phong, "Illumination for Computer Generated Pictures",
+// CACM 18(6), 1975); it is always on the same side as `normal`.
 struct SurfacePoint {
-  Vec3 position;
-  Vec3 normal;
+  SurfacePoint() = default;
+  SurfacePoint(const Vec3& position, const Vec3& normal, const Vec2& uv = Vec2(0.0f))
+      : position(position), normal(normal), uv(uv), shadingNormal(normal) {}
+
+  Vec3 position{0.0f};
+  Vec3 normal{0.0f};
   Vec2 uv{0.0f};
+  Vec3 shadingNormal{0.0f};
 };
 
 // What intersecting costs, counted per ray and summed into the render's
 // statistics and its cost image.
 struct IntersectionCounters {
-  std::uint64_t tests = 0;  // ray-primitive tests: one per shape, one per triangle of a mesh
+  std::uint64_t tests = 0;         // ray-primitive tests: one per shape, one per triangle of a mesh
+  std::uint64_t nodesVisited = 0;  // bounding volumes tested: BVH boxes, bounding spheres
+
+  IntersectionCounters& operator+=(const IntersectionCounters& other) {
+    tests += other.tests;
+    nodesVisited += other.nodesVisited;
+    return *this;
+  }
 };
 
 class Shape {
@@ -51,7 +69,7 @@ class Shape {
   virtual SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const = 0;
 
   // The box the shape stays inside (infinite for the plane).
-  virtual Bounds3 bounds() const { return Bounds3::infinite(); }
+  virtual Bounds3 bounds() const = 0;
 
   // A shape is made of primitives that an acceleration structure can bound
   // and test one at a time: a mesh of its triangles, any other shape of
@@ -62,6 +80,22 @@ class Shape {
                                   IntersectionCounters& counters) const {
     return intersect(ray, tMin, hit, counters);
   }
+  // The world-space corners of a primitive that is a triangle standing
+  // still and that intersectPrimitive tests as intersectTriangle
+  // (shapes/triangle.hpp) on these very corners, recording t, the
+  // barycentric coordinates, the shape and the primitive. An acceleration
+  // structure may then test it itself, without a call into the shape (the
+  // BVH in its leaves, Embree as its own triangles), and find the same hit
+  // to the bit. False for any other primitive.
+  virtual bool primitiveTriangle(int /*primitive*/, std::array<Vec3, 3>& /*corners*/) const {
+    return false;
+  }
+
+  // Fills `out` (empty) with triangles covering the surface, for the
+  // algorithms that draw polygons (raster/): finer as settings.level grows,
+  // every vertex on the exact surface with its normal and texture
+  // coordinates.
+  virtual void tessellate(const TessellationSettings& settings, Tessellation& out) const = 0;
 
   // Index of the shape's material in Scene::materials.
   int material() const { return material_; }

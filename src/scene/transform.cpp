@@ -14,4 +14,31 @@ Mat4 worldFromObject(const TransformSpec& spec) {
   return glm::scale(m, spec.scale);
 }
 
+TransformSpec interpolate(const TransformSpec& from, const TransformSpec& to, float time) {
+  return {glm::mix(from.scale, to.scale, time), glm::mix(from.rotateDegrees, to.rotateDegrees, time),
+          glm::mix(from.translate, to.translate, time)};
+}
+
+AffineMap::AffineMap(const Mat4& worldFromObject)
+    : worldFromObject_(worldFromObject),
+      objectFromWorld_(glm::inverse(worldFromObject)),
+      normalToWorld_(glm::transpose(Mat3(objectFromWorld_))) {}
+
+Ray AffineMap::toObject(const Ray& worldRay) const {
+  return Ray{Vec3(objectFromWorld_ * glm::vec4(worldRay.origin, 1.0f)),
+             Mat3(objectFromWorld_) * worldRay.direction, worldRay.time};
+}
+
+SurfacePoint AffineMap::toWorld(const SurfacePoint& object) const {
+  SurfacePoint world = object;
+  world.position = pointToWorld(object.position);
+  world.normal = glm::normalize(normalToWorld_ * object.normal);
+  world.shadingNormal = glm::normalize(normalToWorld_ * object.shadingNormal);
+  return world;
+}
+
+Vec3 AffineMap::pointToWorld(const Vec3& point) const {
+  return Vec3(worldFromObject_ * glm::vec4(point, 1.0f));
+}
+
 }  // namespace rise

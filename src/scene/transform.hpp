@@ -1,6 +1,8 @@
 #pragma once
 
 #include "core/math.hpp"
+#include "core/ray.hpp"
+#include "scene/shape.hpp"
 
 namespace rise {
 
@@ -17,5 +19,28 @@ struct TransformSpec {
 };
 
 Mat4 worldFromObject(const TransformSpec& spec);
+
+// The spec a linear motion has reached at `time` in [0, 1]: scale, angles and
+// translation each interpolated between `from` and `to`.
+TransformSpec interpolate(const TransformSpec& from, const TransformSpec& to, float time);
+
+// An affine map between a shape's own space and the world, with what it takes
+// to carry rays in and surface points out: points and directions by the
+// inverse, normals back by the inverse transpose.
+class AffineMap {
+ public:
+  explicit AffineMap(const Mat4& worldFromObject);
+
+  // The ray in object space. Its direction is not renormalised, so that t
+  // means the same in both spaces.
+  Ray toObject(const Ray& worldRay) const;
+  SurfacePoint toWorld(const SurfacePoint& object) const;
+  Vec3 pointToWorld(const Vec3& point) const;
+
+ private:
+  Mat4 worldFromObject_;
+  Mat4 objectFromWorld_;
+  Mat3 normalToWorld_;
+};
 
 }  // namespace rise

@@ -91,6 +91,8 @@ class CheckedMap {
   // The value of a key that must be there: "sphere is missing 'radius'".
   Field required(std::string_view key) const;
   std::optional<Field> optional(std::string_view key) const;
+  // Where the map is, for a problem with it as a whole.
+  const YAML::Mark& mark() const { return mark_; }
 
  private:
   std::string name_;

@@ -1,5 +1,8 @@
 #include "scene/shapes/box.hpp"
 
+#include <algorithm>
+#include <array>
+
 namespace rise {
 
 namespace {
@@ -61,6 +64,28 @@ bool Box::intersect(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& 
 
 SurfacePoint Box::surfaceAt(const Ray& ray, const Hit& hit) const {
   return {ray.at(hit.t), faceNormal(hit.primitive)};
+}
+
+Bounds3 Box::bounds() const { return {min_, max_}; }
+
+void Box::tessellate(const TessellationSettings&, Tessellation& out) const {
+  for (int face = 0; face < 6; ++face) {
+    const int axis = face / 2;
+    const bool maxSide = face % 2 == 1;
+    // u x v is the axis, so u then v turns counter-clockwise around +axis.
+    const int u = (axis + 1) % 3;
+    const int v = (axis + 2) % 3;
+    std::array<int, 4> corners;
+    for (int corner = 0; corner < 4; ++corner) {
+      Vec3 position = maxSide ? max_ : min_;
+      position[u] = (corner == 1 || corner == 2) ? max_[u] : min_[u];
+      position[v] = corner >= 2 ? max_[v] : min_[v];
+      corners[corner] = out.addVertex({position, faceNormal(face)});
+    }
+    if (!maxSide) std::reverse(corners.begin(), corners.end());
+    out.addConvexPolygon(corners);
+  }
+  out.enclosesSolid = true;
 }
 
 }  // namespace rise

@@ -1,5 +1,8 @@
 #include "scene/shapes/cone.hpp"
 
+#include <algorithm>
+#include <vector>
+
 #include "scene/shapes/disk.hpp"
 #include "scene/shapes/quadratic.hpp"
 
@@ -66,6 +69,37 @@ SurfacePoint Cone::surfaceAt(const Ray& ray, const Hit& hit) const {
   // The apex has no tangent plane; the axis stands in for its normal.
   if (glm::dot(gradient, gradient) == 0.0f) return {position, axis_};
   return {position, glm::normalize(gradient)};
+}
+
+Bounds3 Cone::bounds() const {
+  Bounds3 box = diskBounds(base_, axis_, radius_);
+  box.grow(apex_);
+  return box;
+}
+
+// Triangles from the base circle to the apex, and the base cap. The apex has
+// no normal of its own: each triangle's apex corner takes the side's normal
+// halfway across the triangle.
+void Cone::tessellate(const TessellationSettings& settings, Tessellation& out) const {
+  // Across the slant (apex - rim) and around the axis, out of the cone.
+  const auto sideNormal = [&](const Vec3& direction) {
+    return glm::normalize(height_ * direction + radius_ * axis_);
+  };
+  const std::vector<Vec3> around = directionsAround(axis_, segmentsPerTurn(settings.level));
+  std::vector<int> cap;
+  for (std::size_t k = 0; k < around.size(); ++k) {
+    const Vec3& direction = around[k];
+    const Vec3& nextDirection = around[(k + 1) % around.size()];
+    const int rim = out.addVertex({base_ + radius_ * direction, sideNormal(direction)});
+    const int nextRim = out.addVertex({base_ + radius_ * nextDirection, sideNormal(nextDirection)});
+    const int apex = out.addVertex({apex_, sideNormal(glm::normalize(direction + nextDirection))});
+    out.addTriangle(rim, nextRim, apex);
+    cap.push_back(out.addVertex({base_ + radius_ * direction, -axis_}));
+  }
+  // The cap faces down the axis: its corners turn clockwise around it.
+  std::reverse(cap.begin(), cap.end());
+  out.addConvexPolygon(cap);
+  out.enclosesSolid = true;
 }
 
 }  // namespace rise

@@ -15,6 +15,8 @@ class Cone final : public Shape {
   bool intersect(const Ray& ray, float tMin, Hit& hit,
                  IntersectionCounters& counters) const override;
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
+  Bounds3 bounds() const override;
+  void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
 
  private:
   Vec3 base_;

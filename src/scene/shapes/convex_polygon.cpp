@@ -98,4 +98,16 @@ SurfacePoint ConvexPolygon::surfaceAt(const Ray& ray, const Hit& hit) const {
   return {ray.at(hit.t), normal_};
 }
 
+Bounds3 ConvexPolygon::bounds() const {
+  Bounds3 box;
+  for (const Vec3& vertex : vertices_) box.grow(vertex);
+  return box;
+}
+
+void ConvexPolygon::tessellate(const TessellationSettings&, Tessellation& out) const {
+  std::vector<int> corners;
+  for (const Vec3& vertex : vertices_) corners.push_back(out.addVertex({vertex, normal_}));
+  out.addConvexPolygon(corners);
+}
+
 }  // namespace rise

@@ -1,5 +1,9 @@
 #include "scene/shapes/cylinder.hpp"
 
+#include <algorithm>
+#include <array>
+#include <vector>
+
 #include "scene/shapes/disk.hpp"
 #include "scene/shapes/quadratic.hpp"
 
@@ -69,6 +73,34 @@ SurfacePoint Cylinder::surfaceAt(const Ray& ray, const Hit& hit) const {
     default:
       return {position, glm::normalize(acrossAxis(position - base_, axis_))};
   }
+}
+
+Bounds3 Cylinder::bounds() const {
+  Bounds3 box = diskBounds(base_, axis_, radius_);
+  box.grow(diskBounds(top_, axis_, radius_));
+  return box;
+}
+
+// Flat rectangles around the side, with the side's normals at their corners,
+// and a polygon for each cap.
+void Cylinder::tessellate(const TessellationSettings& settings, Tessellation& out) const {
+  std::vector<int> bottom, top, baseCap, topCap;
+  for (const Vec3& direction : directionsAround(axis_, segmentsPerTurn(settings.level))) {
+    bottom.push_back(out.addVertex({base_ + radius_ * direction, direction}));
+    top.push_back(out.addVertex({top_ + radius_ * direction, direction}));
+    baseCap.push_back(out.addVertex({base_ + radius_ * direction, -axis_}));
+    topCap.push_back(out.addVertex({top_ + radius_ * direction, axis_}));
+  }
+  const std::size_t segments = bottom.size();
+  for (std::size_t k = 0; k < segments; ++k) {
+    const std::size_t next = (k + 1) % segments;
+    out.addConvexPolygon(std::array{bottom[k], bottom[next], top[next], top[k]});
+  }
+  // The base cap faces down the axis: its corners turn the other way.
+  std::reverse(baseCap.begin(), baseCap.end());
+  out.addConvexPolygon(baseCap);
+  out.addConvexPolygon(topCap);
+  out.enclosesSolid = true;
 }
 
 }  // namespace rise

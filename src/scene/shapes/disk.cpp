@@ -14,4 +14,9 @@ bool intersectDisk(const Ray& ray, Vec3 center, Vec3 normal, float radiusSquared
   return true;
 }
 
+Bounds3 diskBounds(Vec3 center, Vec3 unitNormal, float radius) {
+  const Vec3 reach = radius * glm::sqrt(glm::max(Vec3(0.0f), Vec3(1.0f) - unitNormal * unitNormal));
+  return {center - reach, center + reach};
+}
+
 }  // namespace rise

@@ -1,6 +1,8 @@
 #include "scene/shapes/plane.hpp"
 
+#include <array>
 #include <cmath>
+#include <vector>
 
 namespace rise {
 
@@ -39,8 +41,43 @@ bool Plane::intersect(const Ray& ray, float tMin, Hit& hit, IntersectionCounters
 
 SurfacePoint Plane::surfaceAt(const Ray& ray, const Hit& hit) const {
   const Vec3 position = ray.at(hit.t);
+  return {position, normal_, textureCoordinates(position)};
+}
+
+Vec2 Plane::textureCoordinates(const Vec3& position) const {
   const Vec3 offset = position - point_;
-  return {position, normal_, Vec2(glm::dot(offset, uAxis_), glm::dot(offset, vAxis_))};
+  return {glm::dot(offset, uAxis_), glm::dot(offset, vAxis_)};
+}
+
+Bounds3 Plane::bounds() const { return Bounds3::infinite(); }
+
+// A square grid centred at the foot of the perpendicular from the viewpoint.
+// Its lines are spaced as the cube of their distance from the centre, so that
+// the cells near the camera, which look large, are small, and the far ones,
+// which look small, are large.
+void Plane::tessellate(const TessellationSettings& settings, Tessellation& out) const {
+  const Vec3 foot =
+      settings.viewpoint - glm::dot(settings.viewpoint - point_, normal_) * normal_;
+  const int steps = settings.level;
+  std::vector<float> lines;
+  for (int i = -steps; i <= steps; ++i) {
+    const float fraction = static_cast<float>(i) / static_cast<float>(steps);
+    lines.push_back(0.5f * settings.planeSize * fraction * fraction * fraction);
+  }
+  const int count = static_cast<int>(lines.size());
+  for (float v : lines) {
+    for (float u : lines) {
+      const Vec3 position = foot + u * uAxis_ + v * vAxis_;
+      out.addVertex({position, normal_, textureCoordinates(position)});
+    }
+  }
+  // u x v is the normal: u then v turns counter-clockwise around it.
+  for (int row = 0; row + 1 < count; ++row) {
+    for (int column = 0; column + 1 < count; ++column) {
+      const int corner = row * count + column;
+      out.addConvexPolygon(std::array{corner, corner + 1, corner + count + 1, corner + count});
+    }
+  }
 }
 
 }  // namespace rise

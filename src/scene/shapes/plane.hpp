@@ -21,8 +21,12 @@ class Plane final : public Shape {
   bool intersect(const Ray& ray, float tMin, Hit& hit,
                  IntersectionCounters& counters) const override;
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
+  Bounds3 bounds() const override;
+  void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
 
  private:
+  Vec2 textureCoordinates(const Vec3& position) const;
+
   Vec3 point_;
   Vec3 normal_;
   Vec3 uAxis_;

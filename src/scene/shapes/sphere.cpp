@@ -1,5 +1,9 @@
 #include "scene/shapes/sphere.hpp"
 
+#include <array>
+#include <cmath>
+#include <vector>
+
 #include "scene/shapes/quadratic.hpp"
 
 namespace rise {
@@ -30,6 +34,37 @@ bool Sphere::intersect(const Ray& ray, float tMin, Hit& hit, IntersectionCounter
 SurfacePoint Sphere::surfaceAt(const Ray& ray, const Hit& hit) const {
   const Vec3 position = ray.at(hit.t);
   return {position, (position - center_) / radius_};
+}
+
+Bounds3 Sphere::bounds() const { return {center_ - Vec3(radius_), center_ + Vec3(radius_)}; }
+
+// Rings of latitude around the y axis, pole to pole, joined by quads (planar
+// trapezoids) and, at the poles, by triangles.
+void Sphere::tessellate(const TessellationSettings& settings, Tessellation& out) const {
+  const Vec3 axis(0.0f, 1.0f, 0.0f);
+  const int segments = segmentsPerTurn(settings.level);
+  const int rings = segments / 2;
+  const std::vector<Vec3> around = directionsAround(axis, segments);
+  const auto vertexAt = [&](const Vec3& normal) {
+    return out.addVertex({center_ + radius_ * normal, normal});
+  };
+  std::vector<int> upper(segments, vertexAt(axis));
+  for (int ring = 1; ring <= rings; ++ring) {
+    std::vector<int> lower;
+    if (ring == rings) {
+      lower.assign(segments, vertexAt(-axis));
+    } else {
+      const float polar = kPi * static_cast<float>(ring) / static_cast<float>(rings);
+      for (const Vec3& direction : around)
+        lower.push_back(vertexAt(std::sin(polar) * direction + std::cos(polar) * axis));
+    }
+    for (int k = 0; k < segments; ++k) {
+      const int next = (k + 1) % segments;
+      out.addConvexPolygon(std::array{lower[k], lower[next], upper[next], upper[k]});
+    }
+    upper = std::move(lower);
+  }
+  out.enclosesSolid = true;
 }
 
 }  // namespace rise

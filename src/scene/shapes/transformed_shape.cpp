@@ -26,8 +26,40 @@ bool TransformedShape::intersect(const Ray& ray, float tMin, Hit& hit,
 
 SurfacePoint TransformedShape::surfaceAt(const Ray& ray, const Hit& hit) const {
   const SurfacePoint object = shape_->surfaceAt(objectRay(ray), hit);
-  return {Vec3(worldFromObject_ * glm::vec4(object.position, 1.0f)),
-          glm::normalize(normalToWorld_ * object.normal)};
+  SurfacePoint world(Vec3(worldFromObject_ * glm::vec4(object.position, 1.0f)),
+                     glm::normalize(normalToWorld_ * object.normal), object.uv);
+  world.shadingNormal = glm::normalize(normalToWorld_ * object.shadingNormal);
+  return world;
+}
+
+Bounds3 TransformedShape::bounds() const { return toWorld(shape_->bounds()); }
+
+int TransformedShape::primitiveCount() const { return shape_->primitiveCount(); }
+
+Bounds3 TransformedShape::primitiveBounds(int primitive) const {
+  return toWorld(shape_->primitiveBounds(primitive));
+}
+
+bool TransformedShape::intersectPrimitive(int primitive, const Ray& ray, float tMin, Hit& hit,
+                                          IntersectionCounters& counters) const {
+  if (!shape_->intersectPrimitive(primitive, objectRay(ray), tMin, hit, counters)) return false;
+  hit.shape = this;
+  return true;
+}
+
+// An affine map takes a box to a parallelepiped, which lies inside the box
+// around its eight corners.
+Bounds3 TransformedShape::toWorld(const Bounds3& objectBox) const {
+  if (objectBox.isEmpty()) return objectBox;
+  if (!objectBox.isFinite()) return Bounds3::infinite();
+  Bounds3 box;
+  for (int corner = 0; corner < 8; ++corner)
+    box.grow(Vec3(worldFromObject_ * glm::vec4(objectBox.corner(corner), 1.0f)));
+  return box;
+}
+
+void TransformedShape::tessellate(const TessellationSettings& settings, Tessellation& out) const {
+  tessellatePlaced(*shape_, worldFromObject_, settings, out);
 }
 
 }  // namespace rise

@@ -17,9 +17,19 @@ class TransformedShape final : public Shape {
   bool intersect(const Ray& ray, float tMin, Hit& hit,
                  IntersectionCounters& counters) const override;
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
+  Bounds3 bounds() const override;
+  void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+
+  // The primitives of the shape inside, bounded in the world and tested in
+  // the shape's own space.
+  int primitiveCount() const override;
+  Bounds3 primitiveBounds(int primitive) const override;
+  bool intersectPrimitive(int primitive, const Ray& ray, float tMin, Hit& hit,
+                          IntersectionCounters& counters) const override;
 
  private:
   Ray objectRay(const Ray& worldRay) const;
+  Bounds3 toWorld(const Bounds3& objectBox) const;
 
   std::unique_ptr<Shape> shape_;
   Mat4 worldFromObject_;

@@ -21,4 +21,20 @@ SurfacePoint Triangle::surfaceAt(const Ray& ray, const Hit& hit) const {
   return {ray.at(hit.t), normal_};
 }
 
+Bounds3 Triangle::bounds() const {
+  Bounds3 box;
+  for (const Vec3& vertex : vertices_) box.grow(vertex);
+  return box;
+}
+
+bool Triangle::primitiveTriangle(int /*primitive*/, std::array<Vec3, 3>& corners) const {
+  corners = vertices_;
+  return true;
+}
+
+void Triangle::tessellate(const TessellationSettings&, Tessellation& out) const {
+  for (const Vec3& vertex : vertices_) out.addVertex({vertex, normal_});
+  out.addTriangle(0, 1, 2);
+}
+
 }  // namespace rise

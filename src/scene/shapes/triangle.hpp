@@ -51,6 +51,9 @@ class Triangle final : public Shape {
   bool intersect(const Ray& ray, float tMin, Hit& hit,
                  IntersectionCounters& counters) const override;
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
+  Bounds3 bounds() const override;
+  void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+  bool primitiveTriangle(int primitive, std::array<Vec3, 3>& corners) const override;
 
  private:
   std::array<Vec3, 3> vertices_;

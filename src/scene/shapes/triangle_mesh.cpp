@@ -4,12 +4,22 @@
 #include <utility>
 
 #include "scene/shapes/triangle.hpp"
+#include "scene/shapes/vertex_attributes.hpp"
 
 namespace rise {
 
 TriangleMesh::TriangleMesh(std::vector<Vec3> vertices, std::vector<std::array<int, 3>> triangles,
                            int material)
-    : Shape(material), vertices_(std::move(vertices)), triangles_(std::move(triangles)) {
+    : TriangleMesh(MeshGeometry{std::move(vertices), {}, {}, std::move(triangles)}, material) {}
+
+TriangleMesh::TriangleMesh(MeshGeometry geometry, int material)
+    : Shape(material),
+      vertices_(std::move(geometry.positions)),
+      triangles_(std::move(geometry.triangles)),
+      normals_(std::move(geometry.normals)),
+      uvs_(std::move(geometry.uvs)) {
+  assert(normals_.empty() || normals_.size() == vertices_.size());
+  assert(uvs_.empty() || uvs_.size() == vertices_.size());
   for ([[maybe_unused]] const auto& triangle : triangles_)
     for ([[maybe_unused]] int index : triangle)
       assert(index >= 0 && static_cast<std::size_t>(index) < vertices_.size());
@@ -17,23 +27,66 @@ TriangleMesh::TriangleMesh(std::vector<Vec3> vertices, std::vector<std::array<in
 
 bool TriangleMesh::intersect(const Ray& ray, float tMin, Hit& hit,
                              IntersectionCounters& counters) const {
-  counters.tests += triangles_.size();
   bool found = false;
-  for (std::size_t i = 0; i < triangles_.size(); ++i) {
-    const auto& [a, b, c] = triangles_[i];
-    if (intersectTriangle(ray, vertices_[a], vertices_[b], vertices_[c], tMin, hit.t, hit.t,
-                          hit.barycentric)) {
-      hit.primitive = static_cast<int>(i);
-      found = true;
-    }
-  }
-  if (found) hit.shape = this;
+  for (int triangle = 0; triangle < primitiveCount(); ++triangle)
+    found |= intersectPrimitive(triangle, ray, tMin, hit, counters);
   return found;
 }
 
 SurfacePoint TriangleMesh::surfaceAt(const Ray& ray, const Hit& hit) const {
   const auto& [a, b, c] = triangles_[hit.primitive];
-  return {ray.at(hit.t), windingNormal(vertices_[a], vertices_[b], vertices_[c])};
+  SurfacePoint surface(ray.at(hit.t), windingNormal(vertices_[a], vertices_[b], vertices_[c]));
+  if (!normals_.empty())
+    surface.shadingNormal = interpolatedNormal(surface.normal, normals_[a], normals_[b],
+                                               normals_[c], hit.barycentric);
+  if (!uvs_.empty()) surface.uv = atBarycentric(uvs_[a], uvs_[b], uvs_[c], hit.barycentric);
+  return surface;
+}
+
+Bounds3 TriangleMesh::bounds() const {
+  Bounds3 box;
+  for (int triangle = 0; triangle < primitiveCount(); ++triangle)
+    box.grow(primitiveBounds(triangle));
+  return box;
+}
+
+int TriangleMesh::primitiveCount() const { return static_cast<int>(triangles_.size()); }
+
+Bounds3 TriangleMesh::primitiveBounds(int triangle) const {
+  Bounds3 box;
+  for (int index : triangles_[triangle]) box.grow(vertices_[index]);
+  return box;
+}
+
+bool TriangleMesh::intersectPrimitive(int triangle, const Ray& ray, float tMin, Hit& hit,
+                                      IntersectionCounters& counters) const {
+  ++counters.tests;
+  const auto& [a, b, c] = triangles_[triangle];
+  if (!intersectTriangle(ray, vertices_[a], vertices_[b], vertices_[c], tMin, hit.t, hit.t,
+                         hit.barycentric))
+    return false;
+  hit.shape = this;
+  hit.primitive = triangle;
+  return true;
+}
+
+bool TriangleMesh::primitiveTriangle(int triangle, std::array<Vec3, 3>& corners) const {
+  for (int corner = 0; corner < 3; ++corner)
+    corners[corner] = vertices_[triangles_[triangle][corner]];
+  return true;
+}
+
+// Each triangle with its own corners, all three with its flat normal, as the
+// ray tracer shades it.
+void TriangleMesh::tessellate(const TessellationSettings&, Tessellation& out) const {
+  for (const auto& triangle : triangles_) {
+    const Vec3 normal = windingNormal(vertices_[triangle[0]], vertices_[triangle[1]],
+                                      vertices_[triangle[2]]);
+    const int first = static_cast<int>(out.vertices.size());
+    for (int index : triangle) out.addVertex({vertices_[index], normal});
+    out.addTriangle(first, first + 1, first + 2);
+  }
+  out.enclosesSolid = enclosesSolid(vertices_, triangles_);
 }
 
 }  // namespace rise

@@ -95,5 +95,43 @@ TEST(TriangleMesh, CountsOneTestPerTriangle) {
   EXPECT_EQ(intersect(unitQuad(), downAt(2.0f, 2.0f)).counters.tests, 2u);
 }
 
+// The unit quad with the normals of a dome over it, leaning out from a
+// point below its centre, and texture coordinates equal to x and y.
+TriangleMesh domeQuad(const Vec3& domeCentre) {
+  const std::vector<Vec3> corners{Vec3(0.0f), Vec3(1.0f, 0.0f, 0.0f), Vec3(1.0f, 1.0f, 0.0f),
+                                  Vec3(0.0f, 1.0f, 0.0f)};
+  MeshGeometry geometry{corners, {}, {}, {{0, 1, 2}, {0, 2, 3}}};
+  for (const Vec3& corner : corners) {
+    geometry.normals.push_back(glm::normalize(corner - domeCentre));
+    geometry.uvs.emplace_back(corner.x, corner.y);
+  }
+  return TriangleMesh(std::move(geometry), 0);
+}
+
+TEST(TriangleMesh, InterpolatesVertexNormalsIntoTheShadingNormal) {
+  const Vec3 below(0.5f, 0.5f, -1.0f);
+  const TriangleMesh dome = domeQuad(below);
+  // (0.75, 0.25) is 0.25 v0 + 0.5 v1 + 0.25 v2 of the lower triangle.
+  const auto result = intersect(dome, downAt(0.75f, 0.25f));
+  EXPECT_TRUE(hitsAt(result, 5.0f, {0.75f, 0.25f, 0.0f}, {0.0f, 0.0f, 1.0f}));
+  const Vec3 blend = 0.25f * glm::normalize(Vec3(0.0f) - below) +
+                     0.5f * glm::normalize(Vec3(1.0f, 0.0f, 0.0f) - below) +
+                     0.25f * glm::normalize(Vec3(1.0f, 1.0f, 0.0f) - below);
+  EXPECT_TRUE(shape_testing::nearlyEqual(result.surface.shadingNormal, glm::normalize(blend)));
+  EXPECT_EQ(result.surface.uv, Vec2(0.75f, 0.25f));
+}
+
+TEST(TriangleMesh, KeepsTheFlatNormalWhereTheVertexNormalsFaceAway) {
+  // Normals leaning out from a point above the quad face -z, against its winding.
+  const auto result = intersect(domeQuad({0.5f, 0.5f, 1.0f}), downAt(0.75f, 0.25f));
+  EXPECT_EQ(result.surface.shadingNormal, Vec3(0.0f, 0.0f, 1.0f));
+}
+
+TEST(TriangleMesh, WithoutVertexNormalsShadesWithTheFlatNormal) {
+  const auto result = intersect(unitQuad(), downAt(0.75f, 0.25f));
+  EXPECT_EQ(result.surface.shadingNormal, result.surface.normal);
+  EXPECT_EQ(result.surface.uv, Vec2(0.0f));
+}
+
 }  // namespace
 }  // namespace rise

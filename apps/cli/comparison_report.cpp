@@ -1,0 +1,186 @@
+#include "comparison_report.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace rise::cli {
+namespace {
+
+// Every statistic any algorithm reported, in the order they first appear.
+std::vector<std::string> statisticNames(const std::vector<ComparedRender>& renders) {
+  std::vector<std::string> names;
+  for (const ComparedRender& render : renders)
+    for (const auto& [name, value] : render.result.stats.entries())
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  return names;
+}
+
+const double* findValue(const Stats& stats, const std::string& name) {
+  for (const auto& [key, value] : stats.entries())
+    if (key == name) return &value;
+  return nullptr;
+}
+
+std::string formatNumber(double value) {
+  std::ostringstream out;
+  if (value == static_cast<double>(static_cast<long long>(value)))
+    out << static_cast<long long>(value);
+  else
+    out << std::setprecision(4) << value;
+  return out.str();
+}
+
+std::string cell(const Stats& stats, const std::string& name) {
+  const double* value = findValue(stats, name);
+  return value != nullptr ? formatNumber(*value) : "";
+}
+
+std::string escapeHtml(const std::string& text) {
+  std::string escaped;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        escaped += "&amp;";
+        break;
+      case '<':
+        escaped += "&lt;";
+        break;
+      case '>':
+        escaped += "&gt;";
+        break;
+      case '"':
+        escaped += "&quot;";
+        break;
+      default:
+        escaped += c;
+    }
+  }
+  return escaped;
+}
+
+void writeText(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream file(path);
+  file << text;
+  if (!file)
+    throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+}
+
+std::string csv(const std::vector<ComparedRender>& renders, const std::vector<std::string>& names) {
+  std::ostringstream out;
+  out << "algorithm";
+  for (const std::string& name : names) out << "," << name;
+  out << "\n";
+  for (const ComparedRender& render : renders) {
+    out << render.algorithm;
+    for (const std::string& name : names) out << "," << cell(render.result.stats, name);
+    out << "\n";
+  }
+  return out.str();
+}
+
+std::string markdown(const std::string& sceneName, const std::vector<ComparedRender>& renders,
+                     const std::vector<std::string>& names) {
+  std::ostringstream out;
+  out << "# " << sceneName << "\n\n| |";
+  for (const ComparedRender& render : renders) out << " " << render.algorithm << " |";
+  out << "\n|---|";
+  for (std::size_t i = 0; i < renders.size(); ++i) out << "---:|";
+  out << "\n";
+  for (const std::string& name : names) {
+    out << "| " << name << " |";
+    for (const ComparedRender& render : renders)
+      out << " " << cell(render.result.stats, name) << " |";
+    out << "\n";
+  }
+  return out.str();
+}
+
+// A horizontal bar a render, as long as its time: no script, no library.
+std::string timeChart(const std::vector<ComparedRender>& renders) {
+  double longest = 0.0;
+  for (const ComparedRender& render : renders)
+    longest = std::max(longest, render.result.stats.value("render_seconds"));
+  constexpr int kBarHeight = 22, kLabelWidth = 220, kBarWidth = 480;
+  std::ostringstream out;
+  out << "<svg width=\"" << kLabelWidth + kBarWidth + 90 << "\" height=\""
+      << kBarHeight * renders.size() + 4 << "\" role=\"img\" aria-label=\"render times\">\n";
+  for (std::size_t i = 0; i < renders.size(); ++i) {
+    const double seconds = renders[i].result.stats.value("render_seconds");
+    const double width = longest > 0.0 ? kBarWidth * seconds / longest : 0.0;
+    const std::size_t y = i * kBarHeight;
+    out << "<text x=\"0\" y=\"" << y + 15 << "\">" << escapeHtml(renders[i].algorithm)
+        << "</text><rect x=\"" << kLabelWidth << "\" y=\"" << y + 3 << "\" width=\"" << width
+        << "\" height=\"" << kBarHeight - 6 << "\" fill=\"#4a7fb5\"/><text x=\""
+        << kLabelWidth + width + 6 << "\" y=\"" << y + 15 << "\">" << formatNumber(seconds)
+        << " s</text>\n";
+  }
+  out << "</svg>\n";
+  return out.str();
+}
+
+std::string html(const std::string& sceneName, const std::vector<ComparedRender>& renders,
+                 const std::vector<std::string>& names) {
+  std::ostringstream out;
+  out << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>RISE: "
+      << escapeHtml(sceneName)
+      << "</title>\n<style>body{font-family:sans-serif;margin:2em}"
+         ".images{display:flex;flex-wrap:wrap;gap:1em}figure{margin:0}"
+         "figcaption{font-size:90%;max-width:320px}img{max-width:320px;image-rendering:pixelated}"
+         "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;"
+         "padding:2px 8px}td{text-align:right}</style></head><body>\n<h1>"
+      << escapeHtml(sceneName) << "</h1>\n<div class=\"images\">\n";
+  for (const ComparedRender& render : renders) {
+    out << "<figure><a href=\"" << escapeHtml(render.algorithm) << ".png\"><img src=\""
+        << escapeHtml(render.algorithm) << ".png\" alt=\"" << escapeHtml(render.algorithm)
+        << "\"></a><figcaption><b>" << escapeHtml(render.algorithm)
+        << "</b>: " << escapeHtml(render.summary) << "</figcaption></figure>\n";
+  }
+  out << "</div>\n<h2>Render time</h2>\n"
+      << timeChart(renders) << "<h2>Counters</h2>\n<table><tr><th></th>";
+  for (const ComparedRender& render : renders)
+    out << "<th>" << escapeHtml(render.algorithm) << "</th>";
+  out << "</tr>\n";
+  for (const std::string& name : names) {
+    out << "<tr><th>" << escapeHtml(name) << "</th>";
+    for (const ComparedRender& render : renders)
+      out << "<td>" << cell(render.result.stats, name) << "</td>";
+    out << "</tr>\n";
+  }
+  out << "</table>\n</body></html>\n";
+  return out.str();
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& directory,
+                                                   const std::string& sceneName,
+                                                   const std::vector<ComparedRender>& renders,
+                                                   Encoding encoding) {
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error)
+    throw std::runtime_error(directory.string() + ": cannot create (" + error.message() + ")");
+
+  std::vector<std::filesystem::path> written;
+  for (const ComparedRender& render : renders) {
+    written.push_back(directory / (render.algorithm + ".png"));
+    writeImage(render.result.image, written.back(), encoding);
+  }
+  const std::vector<std::string> names = statisticNames(renders);
+  const std::pair<const char*, std::string> reports[] = {
+      {"results.csv", csv(renders, names)},
+      {"results.md", markdown(sceneName, renders, names)},
+      {"index.html", html(sceneName, renders, names)}};
+  for (const auto& [file, text] : reports) {
+    written.push_back(directory / file);
+    writeText(written.back(), text);
+  }
+  return written;
+}
+
+}  // namespace rise::cli

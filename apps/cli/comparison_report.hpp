@@ -1,0 +1,30 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/image_io.hpp"
+#include "render/renderer.hpp"
+
+namespace rise::cli {
+
+// One algorithm's render of the compared scene.
+struct ComparedRender {
+  std::string algorithm;
+  std::string summary;
+  RenderResult result;
+};
+
+// Writes, into `directory`, each algorithm's image (<algorithm>.png), the
+// times and counters of all of them as results.csv (one row an algorithm)
+// and results.md (one row a counter, one column an algorithm, for reading),
+// and index.html, which shows the images side by side above the table and a
+// bar chart of the times. Returns the files written. Throws ImageFileError
+// or std::runtime_error when a file cannot be written.
+std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& directory,
+                                                   const std::string& sceneName,
+                                                   const std::vector<ComparedRender>& renders,
+                                                   Encoding encoding);
+
+}  // namespace rise::cli

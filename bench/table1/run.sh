@@ -1,0 +1,128 @@
+#!/usr/bin/env bash
+# The original RISE report's Table 1, run again: its model scene (a Quake II
+# model of 666 triangles among a few primitives, examples/md2.yaml) ray
+# traced with and without bounding spheres, with and without 16 jittered
+# samples a pixel, and beside them the BVH that has since become the
+# default. Each render's "render_seconds" (building the structure and
+# rendering, not loading the scene) is printed beside the report's figure.
+set -euo pipefail
+shopt -s inherit_errexit
+
+readonly SCENE=examples/md2.yaml
+
+usage() {
+  cat <<EOF
+usage: bench/table1/run.sh [--runs N] [--threads N] [--out DIR] [BUILD_DIR]
+  BUILD_DIR     RISE's build directory, holding the rise executable (default: build)
+  --runs N      render each row N times and keep the best (default: 1)
+  --threads N   worker threads (default: one per core)
+  --out DIR     where images, statistics and logs go (default: out/bench-table1)
+EOF
+}
+
+die() {
+  echo "run.sh: $*" >&2
+  exit 1
+}
+
+runs=1
+threads=0
+out=out/bench-table1
+build=build
+while (($# > 0)); do
+  case "$1" in
+    --runs | --threads | --out)
+      (($# >= 2)) || die "$1 needs a value"
+      case "$1" in
+        --runs) runs="$2" ;;
+        --threads) threads="$2" ;;
+        --out) out="$2" ;;
+      esac
+      shift
+      ;;
+    -h | --help)
+      usage
+      exit 0
+      ;;
+    -*) die "unknown option $1 (see --help)" ;;
+    *) build="$1" ;;
+  esac
+  shift
+done
+[[ "$runs" =~ ^[1-9][0-9]*$ ]] || die "--runs takes a positive count, not '$runs'"
+[[ "$threads" =~ ^[0-9]+$ ]] || die "--threads takes a count, not '$threads'"
+
+# Paths given by the caller are relative to where it stands; the renders run
+# from the repository root, where the scene is.
+build="$(realpath -m "$build")"
+out="$(realpath -m "$out")"
+cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+[[ -x "$build/rise" ]] || die "no RISE executable at $build/rise (build it, or pass BUILD_DIR)"
+mkdir -p "$out"
+
+# One value of a render's statistics JSON.
+stat() {
+  python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])' "$1" "$2" \
+    2>/dev/null || die "no $2 in $1"
+}
+
+# Renders one row ($1: a file name, $2: the structure, then the sampling
+# options) and prints its render seconds.
+render() {
+  local name="$1" accel="$2"
+  shift 2
+  local stats="$out/$name.json" log="$out/$name.log"
+  if ! "$build/rise" render "$SCENE" -o "$out/$name.png" --accel "$accel" --threads "$threads" \
+    --stats "$stats" "$@" >"$log" 2>&1; then
+    die "RISE failed; see $log"
+  fi
+  stat "$stats" render_seconds
+}
+
+# Prints the best of the runs of one row, and leaves the statistics of its
+# last run in $out/$1.json.
+best_of_runs() {
+  local run seconds times=()
+  for ((run = 1; run <= runs; ++run)); do
+    seconds="$(render "$@")"
+    times+=("$seconds")
+    printf '  %s, run %d: %.3f s\n' "$1" "$run" "$seconds" >&2
+  done
+  printf '%s\n' "${times[@]}" | sort -g | head -n 1
+}
+
+readonly ANTIALIASING=(--samples 16 --pattern jittered)
+# The rows: the report's wording, its seconds (- where it has none), a file
+# name, the structure, and whether to anti-alias.
+readonly ROWS=(
+  "bounding sphere|41|spheres|spheres|no"
+  "without bounding sphere|83|none|none|no"
+  "anti-aliasing|834|none-aa|none|yes"
+  "anti-aliasing and bounding sphere|415|spheres-aa|spheres|yes"
+  "BVH|-|bvh|bvh|no"
+  "anti-aliasing and BVH|-|bvh-aa|bvh|yes"
+)
+
+echo "Table 1: $SCENE, best of $runs; images and statistics in $out" >&2
+lines=()
+for row in "${ROWS[@]}"; do
+  IFS='|' read -r label report name accel antialias <<<"$row"
+  sampling=()
+  [[ "$antialias" == yes ]] && sampling=("${ANTIALIASING[@]}")
+  seconds="$(best_of_runs "$name" "$accel" "${sampling[@]}")"
+  stats="$out/$name.json"
+  lines+=("$(printf '| %-33s | %10s | %8.3f | %-7s | %9.1f | %11.1f |' "$label" "$report" \
+    "$seconds" "$accel" "$(stat "$stats" intersection_tests_per_ray)" \
+    "$(stat "$stats" nodes_visited_per_ray)")")
+done
+
+first="$out/spheres.json"
+echo
+printf '%s at %sx%s on %s threads (the report: one processor of 2004)\n' "$SCENE" \
+  "$(stat "$first" width)" "$(stat "$first" height)" "$(stat "$first" threads)"
+echo
+printf '| %-33s | %10s | %8s | %-7s | %9s | %11s |\n' "Table 1 row" "report (s)" "RISE (s)" \
+  "--accel" "tests/ray" "volumes/ray"
+printf '|%s|%s|%s|%s|%s|%s|\n' "-----------------------------------" "------------" \
+  "----------" "---------" "-----------" "-------------"
+printf '%s\n' "${lines[@]}"

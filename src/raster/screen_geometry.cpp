@@ -1,0 +1,183 @@
+#include "raster/screen_geometry.hpp"
+
+#include "raster/parallel_ranges.hpp"
+#include "raster/polygon_clipping.hpp"
+
+namespace rise {
+namespace {
+
+// How far beyond the image's sides polygons reach after clipping, in pixels.
+constexpr float kClipMargin = 1.0f;
+constexpr int kFacesPerRange = 4096;
+
+// A vertex in camera coordinates, which of the view volume's planes it lies
+// outside of (bit i for plane i), and, when it is in front of the near plane,
+// its projection (x, y, w).
+struct ViewedVertex {
+  Vec3 camera;
+  unsigned outside;
+  Vec3 screen;
+};
+
+Vec3 project(const ViewProjection& view, const Vec3& camera) {
+  return Vec3(view.toRaster(camera), 1.0f / camera.z);
+}
+
+RasterAffine relativeTo(const glm::dvec3& form, const Vec2& origin) {
+  return {Vec3(form.x, form.y, form.x * origin.x + form.y * origin.y + form.z)};
+}
+
+// The direction d from the eye meets the plane of the corners c0, c1, c2
+// (camera coordinates) where d = sum mu_i c_i with sum mu_i = 1 / n: mu =
+// M^-1 d, with M the matrix of columns c_i, and the barycentric coordinates
+// there are mu / sum mu. Each mu_i is linear in d, hence affine in raster
+// position. Computed in double precision: for a small, distant face M is
+// nearly singular.
+ScreenFace setUpFace(const ViewProjection& view, int sceneFace, bool frontFacing,
+                     const std::array<Vec3, 3>& camera, const Vec2& origin) {
+  const glm::dmat3 cornerColumns{glm::dvec3(camera[0]), glm::dvec3(camera[1]),
+                                 glm::dvec3(camera[2])};
+  const glm::dmat3 weightsOfDirection = glm::inverse(cornerColumns);
+  ScreenFace face{sceneFace, frontFacing, origin, {}, {}};
+  glm::dvec3 sum(0.0);
+  for (int i = 0; i < 3; ++i) {
+    // glm indexes matrices [column][row]: this is row i.
+    const glm::dvec3 row(weightsOfDirection[0][i], weightsOfDirection[1][i],
+                         weightsOfDirection[2][i]);
+    const glm::dvec3 form = view.rasterForm(row);
+    face.weights[i] = relativeTo(form, origin);
+    sum += form;
+  }
+  face.inverseDepth = relativeTo(sum, origin);
+  return face;
+}
+
+class FaceProjector {
+ public:
+  FaceProjector(const TessellatedScene& scene, const ViewProjection& view, bool backfaceCulling)
+      : scene_(scene),
+        view_(view),
+        volume_(view.viewVolume(kNearDistance, kClipMargin)),
+        backfaceCulling_(backfaceCulling),
+        viewed_(scene.vertices.size()) {}
+
+  void viewVertices(int begin, int end) {
+    for (int i = begin; i < end; ++i) {
+      ViewedVertex& vertex = viewed_[i];
+      vertex.camera = view_.toCamera(scene_.vertices[i].position);
+      vertex.outside = 0;
+      for (std::size_t plane = 0; plane < volume_.size(); ++plane)
+        if (signedDistance(volume_[plane], vertex.camera) < 0.0f) vertex.outside |= 1u << plane;
+      if (vertex.camera.z > 0.0f) vertex.screen = project(view_, vertex.camera);
+    }
+  }
+
+  void projectFaces(int begin, int end, ScreenGeometry& out) const {
+    std::vector<Vec3> polygon, kept, cutOff;
+    for (int f = begin; f < end; ++f) {
+      ++out.counters.polygonsIn;
+      const SceneFace& face = scene_.faces[f];
+      const ViewedVertex& a = viewed_[face.vertices[0]];
+      const ViewedVertex& b = viewed_[face.vertices[1]];
+      const ViewedVertex& c = viewed_[face.vertices[2]];
+      const std::array<Vec3, 3> camera{a.camera, b.camera, c.camera};
+      // The report's test, (P - Obs) . N, in the world: camera coordinates
+      // (right, up, forward) are left-handed, and mirror the winding.
+      const Vec3& p0 = scene_.vertices[face.vertices[0]].position;
+      const Vec3& p1 = scene_.vertices[face.vertices[1]].position;
+      const Vec3& p2 = scene_.vertices[face.vertices[2]].position;
+      const float awayFromEye = glm::dot(p0 - view_.eye(), glm::cross(p1 - p0, p2 - p0));
+      if (awayFromEye == 0.0f || (backfaceCulling_ && face.cullable && awayFromEye > 0.0f)) {
+        ++out.counters.culled;
+        continue;
+      }
+      if ((a.outside & b.outside & c.outside) != 0) {
+        ++out.counters.outside;
+        continue;
+      }
+      const unsigned crossed = a.outside | b.outside | c.outside;
+      if (crossed == 0) {
+        polygon = {a.screen, b.screen, c.screen};
+      } else {
+        polygon.assign(camera.begin(), camera.end());
+        for (std::size_t plane = 0; plane < volume_.size() && !polygon.empty(); ++plane) {
+          if ((crossed & (1u << plane)) == 0) continue;
+          splitPolygon(polygon, volume_[plane], 0.0f, kept, cutOff);
+          polygon.swap(kept);
+        }
+        if (polygon.empty()) {
+          ++out.counters.outside;
+          continue;
+        }
+        ++out.counters.clipped;
+        for (Vec3& corner : polygon) corner = project(view_, corner);
+      }
+      const int screenFace = static_cast<int>(out.faces.size());
+      out.faces.push_back(setUpFace(view_, f, awayFromEye < 0.0f, camera, Vec2(polygon[0])));
+      out.addPolygon(screenFace, polygon);
+    }
+  }
+
+ private:
+  const TessellatedScene& scene_;
+  const ViewProjection& view_;
+  std::array<glm::vec4, 5> volume_;
+  bool backfaceCulling_;
+  std::vector<ViewedVertex> viewed_;
+};
+
+void append(ScreenGeometry& all, const ScreenGeometry& part) {
+  const int faceOffset = static_cast<int>(all.faces.size());
+  const int cornerOffset = static_cast<int>(all.corners.size());
+  all.faces.insert(all.faces.end(), part.faces.begin(), part.faces.end());
+  all.corners.insert(all.corners.end(), part.corners.begin(), part.corners.end());
+  for (ScreenPolygon polygon : part.polygons) {
+    polygon.face += faceOffset;
+    polygon.firstCorner += cornerOffset;
+    all.polygons.push_back(polygon);
+  }
+  all.counters.polygonsIn += part.counters.polygonsIn;
+  all.counters.culled += part.counters.culled;
+  all.counters.outside += part.counters.outside;
+  all.counters.clipped += part.counters.clipped;
+}
+
+}  // namespace
+
+Vec3 ScreenFace::barycentricAt(const Vec2& raster) const {
+  const Vec2 relative = raster - origin;
+  const Vec3 weighted(weights[0].at(relative), weights[1].at(relative), weights[2].at(relative));
+  return weighted / (weighted.x + weighted.y + weighted.z);
+}
+
+glm::vec4 ScreenFace::plane() const {
+  // w - (a (x - x0) + b (y - y0) + c).
+  const Vec3& form = inverseDepth.coefficients;
+  return {-form.x, -form.y, 1.0f, form.x * origin.x + form.y * origin.y - form.z};
+}
+
+int ScreenGeometry::addPolygon(int face, std::span<const Vec3> polygonCorners) {
+  polygons.push_back({face, static_cast<int>(corners.size()),
+                      static_cast<int>(polygonCorners.size())});
+  corners.insert(corners.end(), polygonCorners.begin(), polygonCorners.end());
+  return static_cast<int>(polygons.size()) - 1;
+}
+
+ScreenGeometry projectScene(const TessellatedScene& scene, const ViewProjection& view,
+                            bool backfaceCulling, int threads) {
+  FaceProjector projector(scene, view, backfaceCulling);
+  const int vertexCount = static_cast<int>(scene.vertices.size());
+  forEachRange(vertexCount, kFacesPerRange, threads,
+               [&](int, int begin, int end) { projector.viewVertices(begin, end); });
+
+  const int faceCount = static_cast<int>(scene.faces.size());
+  std::vector<ScreenGeometry> parts(rangeCount(faceCount, kFacesPerRange));
+  forEachRange(faceCount, kFacesPerRange, threads, [&](int range, int begin, int end) {
+    projector.projectFaces(begin, end, parts[range]);
+  });
+  ScreenGeometry screen;
+  for (const ScreenGeometry& part : parts) append(screen, part);
+  return screen;
+}
+
+}  // namespace rise

@@ -1,0 +1,126 @@
+#include "raster/surface_shader.hpp"
+
+#include "raster/parallel_ranges.hpp"
+#include "shading/phong.hpp"
+
+namespace rise {
+namespace {
+
+constexpr int kItemsPerRange = 4096;
+constexpr int kFront = 0;
+constexpr int kBack = 1;
+
+int sideSeen(const ScreenFace& face) { return face.frontFacing ? kFront : kBack; }
+
+// A normal of the surface turned to the side the eye sees.
+Vec3 towardsEye(const Vec3& normal, int side) { return side == kFront ? normal : -normal; }
+
+}  // namespace
+
+SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessellated,
+                             const ScreenGeometry& screen, const ViewProjection& view,
+                             Shading shading, int threads)
+    : scene_(scene), tessellated_(tessellated), screen_(screen), eye_(view.eye()),
+      shading_(shading) {
+  if (shading_ == Shading::Flat) lightFaces(threads);
+  if (shading_ == Shading::Gouraud) lightVertices(threads);
+}
+
+Color SurfaceShader::illuminate(const Material& material, const Color& surfaceColor,
+                                const Vec3& position, const Vec3& normal) const {
+  const Vec3 toViewer = glm::normalize(eye_ - position);
+  Color color = phongAmbient(material, surfaceColor, scene_.ambient);
+  for (const auto& light : scene_.lights)
+    color += phongDirect(material, surfaceColor, normal, toViewer, light->illuminate(position));
+  return color;
+}
+
+// The model is affine in C: I(C) = C * (I(1) - I(0)) + I(0).
+SurfaceShader::Illumination SurfaceShader::illumination(const Material& material,
+                                                        const Vec3& position,
+                                                        const Vec3& normal) const {
+  const Color unlit = illuminate(material, Color(0.0f), position, normal);
+  return {illuminate(material, Color(1.0f), position, normal) - unlit, unlit};
+}
+
+void SurfaceShader::lightFaces(int threads) {
+  faceLight_.resize(screen_.faces.size());
+  forEachRange(static_cast<int>(faceLight_.size()), kItemsPerRange, threads,
+               [&](int, int begin, int end) {
+                 for (int f = begin; f < end; ++f) {
+                   const SceneFace& face = tessellated_.faces[screen_.faces[f].sceneFace];
+                   const Vec3& a = tessellated_.vertices[face.vertices[0]].position;
+                   const Vec3& b = tessellated_.vertices[face.vertices[1]].position;
+                   const Vec3& c = tessellated_.vertices[face.vertices[2]].position;
+                   const Vec3 normal = glm::normalize(glm::cross(b - a, c - a));
+                   faceLight_[f] =
+                       illumination(scene_.materials[face.material], (a + b + c) / 3.0f,
+                                    towardsEye(normal, sideSeen(screen_.faces[f])));
+                 }
+               });
+}
+
+void SurfaceShader::lightVertices(int threads) {
+  // Only the vertices of faces in view, on the sides seen, as a graphics
+  // pipeline lights only the vertices it is given.
+  const std::size_t vertexCount = tessellated_.vertices.size();
+  std::array<std::vector<int>, 2> material;
+  for (const ScreenFace& screenFace : screen_.faces) {
+    const SceneFace& face = tessellated_.faces[screenFace.sceneFace];
+    std::vector<int>& sideMaterial = material[sideSeen(screenFace)];
+    if (sideMaterial.empty()) sideMaterial.assign(vertexCount, -1);
+    for (int vertex : face.vertices) sideMaterial[vertex] = face.material;
+  }
+  for (int side : {kFront, kBack}) {
+    if (material[side].empty()) continue;
+    vertexLight_[side].resize(vertexCount);
+    forEachRange(static_cast<int>(vertexCount), kItemsPerRange, threads,
+                 [&](int, int begin, int end) {
+                   for (int v = begin; v < end; ++v) {
+                     if (material[side][v] < 0) continue;
+                     const SurfaceVertex& vertex = tessellated_.vertices[v];
+                     vertexLight_[side][v] =
+                         illumination(scene_.materials[material[side][v]], vertex.position,
+                                      towardsEye(vertex.normal, side));
+                   }
+                 });
+  }
+}
+
+ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
+  const ScreenFace& screenFace = screen_.faces[face];
+  const SceneFace& sceneFace = tessellated_.faces[screenFace.sceneFace];
+  const Vec3 weights = screenFace.barycentricAt(centre);
+  const SurfaceVertex& a = tessellated_.vertices[sceneFace.vertices[0]];
+  const SurfaceVertex& b = tessellated_.vertices[sceneFace.vertices[1]];
+  const SurfaceVertex& c = tessellated_.vertices[sceneFace.vertices[2]];
+  SurfacePoint surface;
+  surface.position = weights.x * a.position + weights.y * b.position + weights.z * c.position;
+  surface.normal = glm::normalize(weights.x * a.normal + weights.y * b.normal + weights.z * c.normal);
+  surface.uv = weights.x * a.uv + weights.y * b.uv + weights.z * c.uv;
+
+  const Material& material = scene_.materials[sceneFace.material];
+  const Color surfaceColor = material.colorAt(surface);
+  const int side = sideSeen(screenFace);
+  Color color;
+  switch (shading_) {
+    case Shading::Flat:
+      color = faceLight_[face].with(surfaceColor);
+      break;
+    case Shading::Gouraud: {
+      const std::vector<Illumination>& lit = vertexLight_[side];
+      const auto& [ia, ib, ic] = sceneFace.vertices;
+      const Illumination interpolated{
+          weights.x * lit[ia].byColor + weights.y * lit[ib].byColor + weights.z * lit[ic].byColor,
+          weights.x * lit[ia].added + weights.y * lit[ib].added + weights.z * lit[ic].added};
+      color = interpolated.with(surfaceColor);
+      break;
+    }
+    case Shading::Phong:
+      color = illuminate(material, surfaceColor, surface.position, towardsEye(surface.normal, side));
+      break;
+  }
+  return {color, glm::length(surface.position - eye_), surface.normal};
+}
+
+}  // namespace rise

@@ -1,0 +1,34 @@
+#include "raster/tessellated_scene.hpp"
+
+namespace rise {
+namespace {
+
+bool contains(const Bounds3& box, const Vec3& point) {
+  return glm::all(glm::greaterThanEqual(point, box.min)) &&
+         glm::all(glm::lessThanEqual(point, box.max));
+}
+
+}  // namespace
+
+TessellatedScene tessellateScene(const Scene& scene, const TessellationSettings& settings) {
+  TessellatedScene tessellated;
+  for (std::size_t shape = 0; shape < scene.shapes.size(); ++shape) {
+    Tessellation part;
+    scene.shapes[shape]->tessellate(settings, part);
+    // An eye inside a solid's box may be inside the solid, where its back
+    // faces are the ones in view.
+    const bool cullable =
+        part.enclosesSolid && !contains(scene.shapes[shape]->bounds(), settings.viewpoint);
+    const int firstVertex = static_cast<int>(tessellated.vertices.size());
+    tessellated.vertices.insert(tessellated.vertices.end(), part.vertices.begin(),
+                                part.vertices.end());
+    for (const auto& [a, b, c] : part.triangles)
+      tessellated.faces.push_back({{firstVertex + a, firstVertex + b, firstVertex + c},
+                                   static_cast<int>(shape),
+                                   scene.shapes[shape]->material(),
+                                   cullable});
+  }
+  return tessellated;
+}
+
+}  // namespace rise

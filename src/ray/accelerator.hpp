@@ -1,0 +1,79 @@
+// Acceleration structures: ways for a ray to find what it hits without
+// testing every triangle of the scene. A render chooses one (`--accel`) and
+// builds it once from the scene's shapes. They all answer the same two
+// questions with the same answers, at different costs:
+//
+//   none     every ray against every shape, as the original RISE did first
+//   spheres  Ritter's bounding sphere around each mesh, tested before its triangles
+//   bvh      a bounding volume hierarchy over every primitive (the default)
+//   embree   Intel's Embree 3, when this build found it
+#pragma once
+
+#include <memory>
+#include <string_view>
+#include <vector>
+
+#include "scene/shape.hpp"
+
+namespace rise {
+
+enum class Accel { None, Spheres, Bvh, Embree };
+inline constexpr Accel kAllAccels[] = {Accel::None, Accel::Spheres, Accel::Bvh, Accel::Embree};
+
+std::string_view accelName(Accel accel);  // as on the command line: "bvh"
+
+// The structures this build can make: Embree only when it was found at build time.
+std::vector<Accel> availableAccels();
+bool isAvailable(Accel accel);
+
+// Told of each shape that a shadow ray crosses.
+class CrossingVisitor {
+ public:
+  // `shape` indexes the shapes the structure was built from. Returns false
+  // to end the search.
+  virtual bool crossed(int shape) = 0;
+
+ protected:
+  ~CrossingVisitor() = default;
+};
+
+class Accelerator {
+ public:
+  virtual ~Accelerator() = default;
+
+  // The nearest hit with t in (tMin, hit.t), recorded in `hit` exactly as the
+  // shape's own intersect would record it.
+  virtual bool nearest(const Ray& ray, float tMin, Hit& hit,
+                       IntersectionCounters& counters) const = 0;
+
+  // Tells `visitor` of every shape that the ray meets at some t in (tMin,
+  // tMax), in any order and possibly more than once (once per primitive
+  // met), until the visitor asks to stop: a shadow ray stops at the first
+  // opaque shape it meets.
+  virtual void visitCrossings(const Ray& ray, float tMin, float tMax, CrossingVisitor& visitor,
+                              IntersectionCounters& counters) const = 0;
+};
+
+// Whether the ray meets `shape` at some t in (tMin, tMax): what the
+// structures ask of each shape or primitive they find on a shadow ray's way.
+inline bool crosses(const Shape& shape, const Ray& ray, float tMin, float tMax,
+                    IntersectionCounters& counters) {
+  Hit crossing;
+  crossing.t = tMax;
+  return shape.intersect(ray, tMin, crossing, counters);
+}
+inline bool crossesPrimitive(const Shape& shape, int primitive, const Ray& ray, float tMin,
+                             float tMax, IntersectionCounters& counters) {
+  Hit crossing;
+  crossing.t = tMax;
+  return shape.intersectPrimitive(primitive, ray, tMin, crossing, counters);
+}
+
+// Builds the structure `accel` names over `shapes`, which must outlive it,
+// on `threads` threads (0: one per core). Throws std::invalid_argument when
+// this build does not have it.
+std::unique_ptr<Accelerator> buildAccelerator(Accel accel,
+                                              const std::vector<std::unique_ptr<Shape>>& shapes,
+                                              int threads = 0);
+
+}  // namespace rise

@@ -1,0 +1,68 @@
+// A bounding volume hierarchy (S. Rubin and T. Whitted, "A 3-dimensional
+// representation for fast rendering of complex scenes", SIGGRAPH 1980; T.
+// Kay and J. Kajiya, "Ray Tracing Complex Scenes", SIGGRAPH 1986): boxes
+// within boxes, down to a few primitives in each leaf, so that a ray tests
+// only the primitives in the boxes it passes through, some log n of them
+// instead of n.
+//
+// Every primitive of every bounded shape is an entry of its own: each
+// triangle of a mesh, each sphere or box. Unbounded shapes (planes) are
+// tested apart, before the tree. The tree is built by the binned surface area
+// heuristic (bvh_builder.hpp) and stored flat, in an array of 32-byte nodes.
+// The leaves keep the corners of their triangles (Shape::primitiveTriangle)
+// beside them and test those themselves, sparing a call into the mesh and
+// its vertex indices; other primitives are tested by their shapes.
+//
+// Traversal goes nearest child first: at an inner node the ray tests both
+// children's boxes (slab test, with the ray's inverse direction computed
+// once), enters the nearer and keeps the farther on a small stack; once a
+// hit nearer than a kept box's entry is found, that box is skipped. A shadow
+// ray stops at the first opaque primitive it meets.
+#pragma once
+
+#include <array>
+#include <span>
+
+#include "ray/accelerator.hpp"
+#include "ray/bvh_builder.hpp"
+
+namespace rise {
+
+class Bvh final : public Accelerator {
+ public:
+  // A primitive as a leaf holds it.
+  struct LeafPrimitive {
+    PrimitiveRef ref;
+    bool isTriangle;  // tested here, on these corners
+    std::array<Vec3, 3> corners;
+  };
+
+  // Builds on `threads` threads, 0 meaning one per hardware thread.
+  explicit Bvh(const std::vector<std::unique_ptr<Shape>>& shapes, int threads = 0);
+
+  bool nearest(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& counters) const override;
+  void visitCrossings(const Ray& ray, float tMin, float tMax, CrossingVisitor& visitor,
+                      IntersectionCounters& counters) const override;
+
+  const BvhNodeArray& nodes() const { return nodes_; }
+  std::span<const LeafPrimitive> primitives() const { return primitives_; }
+  int depth() const { return depth_; }
+
+ private:
+  // Walks the boxes that the ray meets at t in (tMin, tMax), nearest first,
+  // calling visitLeaf(node) at each leaf until it returns false. tMax may
+  // shrink as the leaves find hits.
+  template <typename VisitLeaf>
+  void traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCounters& counters,
+                VisitLeaf&& visitLeaf) const;
+  bool intersectPrimitive(const LeafPrimitive& primitive, const Ray& ray, float tMin, Hit& hit,
+                          IntersectionCounters& counters) const;
+
+  std::vector<const Shape*> shapes_;
+  std::vector<int> unbounded_;  // the shapes outside the tree
+  BvhNodeArray nodes_;
+  std::vector<LeafPrimitive> primitives_;  // in leaf order
+  int depth_ = 0;
+};
+
+}  // namespace rise

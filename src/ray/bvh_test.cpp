@@ -1,0 +1,138 @@
+#include "ray/bvh.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+
+#include "scene/shapes/plane.hpp"
+#include "scene/shapes/sphere.hpp"
+#include "scene/shapes/triangle_mesh.hpp"
+
+namespace rise {
+namespace {
+
+std::unique_ptr<Shape> randomTriangles(int count, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> coordinate(-10.0f, 10.0f);
+  std::uniform_real_distribution<float> offset(-0.5f, 0.5f);
+  std::vector<Vec3> vertices;
+  std::vector<std::array<int, 3>> faces;
+  for (int i = 0; i < count; ++i) {
+    const Vec3 centre(coordinate(random), coordinate(random), coordinate(random));
+    for (int corner = 0; corner < 3; ++corner)
+      vertices.push_back(centre + Vec3(offset(random), offset(random), offset(random)));
+    faces.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  return std::make_unique<TriangleMesh>(std::move(vertices), std::move(faces), 0);
+}
+
+bool contains(const Bounds3& outer, const Bounds3& inner) {
+  return glm::all(glm::lessThanEqual(outer.min, inner.min)) &&
+         glm::all(glm::lessThanEqual(inner.max, outer.max));
+}
+
+// Walks the tree from the root, checking every node against its children
+// and counting how often each primitive appears in a leaf.
+void checkSubtree(const Bvh& bvh, std::uint32_t index, int depth,
+                  const std::vector<std::unique_ptr<Shape>>& shapes,
+                  std::map<std::pair<std::uint32_t, std::uint32_t>, int>& appearances) {
+  ASSERT_LE(depth, bvh.depth());
+  const BvhNode& node = bvh.nodes()[index];
+  if (node.isLeaf()) {
+    EXPECT_LE(node.primitiveCount, 8u) << "a leaf of more primitives than kMaxLeafSize";
+    ASSERT_LE(node.offset + node.primitiveCount, bvh.primitives().size());
+    for (std::uint32_t i = node.offset; i < node.offset + node.primitiveCount; ++i) {
+      const PrimitiveRef& ref = bvh.primitives()[i].ref;
+      ++appearances[{ref.shape, ref.primitive}];
+      EXPECT_TRUE(contains(node.box, shapes[ref.shape]->primitiveBounds(ref.primitive)));
+    }
+    return;
+  }
+  ASSERT_EQ(node.offset % 2, 0u) << "siblings share a cache line";
+  ASSERT_LT(node.offset + 1, bvh.nodes().size());
+  for (std::uint32_t child : {node.offset, node.offset + 1}) {
+    EXPECT_TRUE(contains(node.box, bvh.nodes()[child].box));
+    checkSubtree(bvh, child, depth + 1, shapes, appearances);
+  }
+}
+
+void checkInvariants(const std::vector<std::unique_ptr<Shape>>& shapes, int threads) {
+  const Bvh bvh(shapes, threads);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> appearances;
+  checkSubtree(bvh, 0, 1, shapes, appearances);
+  int bounded = 0;
+  for (std::size_t shape = 0; shape < shapes.size(); ++shape) {
+    if (!shapes[shape]->bounds().isFinite()) continue;
+    for (int primitive = 0; primitive < shapes[shape]->primitiveCount(); ++primitive) {
+      ++bounded;
+      EXPECT_EQ(
+          (appearances[{static_cast<std::uint32_t>(shape), static_cast<std::uint32_t>(primitive)}]),
+          1)
+          << "shape " << shape << " primitive " << primitive;
+    }
+  }
+  EXPECT_EQ(appearances.size(), static_cast<std::size_t>(bounded));
+  EXPECT_EQ(bvh.primitives().size(), static_cast<std::size_t>(bounded));
+}
+
+TEST(Bvh, HoldsEveryPrimitiveInExactlyOneLeafInsideEveryBoxAbove) {
+  std::vector<std::unique_ptr<Shape>> shapes;
+  shapes.push_back(std::make_unique<Plane>(Vec3(0.0f), Vec3(0.0f, 1.0f, 0.0f), 0));
+  shapes.push_back(randomTriangles(5000, 1));
+  shapes.push_back(std::make_unique<Sphere>(Vec3(1.0f, 2.0f, 3.0f), 0.5f, 0));
+  shapes.push_back(randomTriangles(100, 2));
+  checkInvariants(shapes, 1);
+}
+
+TEST(Bvh, BuiltOnManyThreadsKeepsItsInvariants) {
+  std::vector<std::unique_ptr<Shape>> shapes;
+  shapes.push_back(randomTriangles(100000, 3));
+  checkInvariants(shapes, 4);
+}
+
+// Triangles whose boxes all have the same centre give the bins nothing to
+// separate: they are split in halves, down to small leaves (which
+// checkInvariants checks).
+TEST(Bvh, SplitsPrimitivesThatShareOneCentre) {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<int, 3>> faces;
+  for (int i = 0; i < 100; ++i) {
+    const float size = 1.0f + 0.01f * static_cast<float>(i);
+    vertices.insert(
+        vertices.end(),
+        {{-size, -size, 0.0f}, {size, -size, 0.0f}, {size, size, 0.0f}, {-size, size, 0.0f}});
+    faces.push_back({4 * i, 4 * i + 1, 4 * i + 2});
+    faces.push_back({4 * i + 2, 4 * i + 3, 4 * i});
+  }
+  std::vector<std::unique_ptr<Shape>> shapes;
+  shapes.push_back(std::make_unique<TriangleMesh>(std::move(vertices), std::move(faces), 0));
+  checkInvariants(shapes, 1);
+}
+
+TEST(Bvh, OfOnlyUnboundedShapesIsEmpty) {
+  std::vector<std::unique_ptr<Shape>> shapes;
+  shapes.push_back(std::make_unique<Plane>(Vec3(0.0f), Vec3(0.0f, 1.0f, 0.0f), 0));
+  const Bvh bvh(shapes);
+  EXPECT_TRUE(bvh.nodes().empty());
+  Hit hit;
+  IntersectionCounters counters;
+  ASSERT_TRUE(bvh.nearest(Ray{{0.0f, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}}, 0.0f, hit, counters));
+  EXPECT_EQ(hit.t, 1.0f);
+}
+
+// The tree's point: a ray through 5000 scattered triangles tests a few of
+// them, not all.
+TEST(Bvh, TestsFewPrimitivesAndCountsTheBoxes) {
+  std::vector<std::unique_ptr<Shape>> shapes;
+  shapes.push_back(randomTriangles(5000, 4));
+  const Bvh bvh(shapes);
+  IntersectionCounters counters;
+  Hit hit;
+  bvh.nearest(Ray{{-20.0f, 0.3f, 0.2f}, {1.0f, 0.0f, 0.0f}}, 0.0f, hit, counters);
+  EXPECT_LT(counters.tests, 200u);
+  EXPECT_GT(counters.nodesVisited, 0u);
+}
+
+}  // namespace
+}  // namespace rise

@@ -1,0 +1,112 @@
+#include "render/film.hpp"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace rise {
+namespace {
+
+constexpr float kGaussianSigma = 0.5f;
+
+float gaussian(float x) { return std::exp(-x * x / (2.0f * kGaussianSigma * kGaussianSigma)); }
+
+float radiusOf(FilterKind kind) {
+  switch (kind) {
+    case FilterKind::Box: return 0.5f;
+    case FilterKind::Tent: return 1.0f;
+    case FilterKind::Gaussian: return 3.0f * kGaussianSigma;
+  }
+  return 0.5f;
+}
+
+}  // namespace
+
+ReconstructionFilter::ReconstructionFilter(FilterKind kind) : kind_(kind), radius_(radiusOf(kind)) {}
+
+float ReconstructionFilter::weight1D(float offset) const {
+  switch (kind_) {
+    // Half-open, so that a sample on the border of two pixels counts once.
+    case FilterKind::Box: return offset >= -0.5f && offset < 0.5f ? 1.0f : 0.0f;
+    case FilterKind::Tent: return std::max(0.0f, 1.0f - std::abs(offset));
+    // Lowered so that it reaches zero at its radius instead of stopping short.
+    case FilterKind::Gaussian: return std::max(0.0f, gaussian(offset) - gaussian(radius_));
+  }
+  return 0.0f;
+}
+
+float ReconstructionFilter::weight(const Vec2& offset) const {
+  return weight1D(offset.x) * weight1D(offset.y);
+}
+
+Film::Film(int width, int height, FilterKind filter)
+    : width_(width),
+      height_(height),
+      filter_(filter),
+      weightedSum_(static_cast<std::size_t>(width) * height, Color(0.0f)),
+      weightSum_(static_cast<std::size_t>(width) * height, 0.0f) {}
+
+FilmTile Film::tileFor(const Tile& tile) const {
+  const int margin = static_cast<int>(std::ceil(filter_.radius() - 0.5f));
+  return FilmTile(filter_, std::max(0, tile.x0 - margin), std::max(0, tile.y0 - margin),
+                  std::min(width_, tile.x1 + margin), std::min(height_, tile.y1 + margin));
+}
+
+void Film::merge(const FilmTile& tile) {
+  const int tileWidth = tile.x1_ - tile.x0_;
+  for (int y = tile.y0_; y < tile.y1_; ++y) {
+    for (int x = tile.x0_; x < tile.x1_; ++x) {
+      const std::size_t from = static_cast<std::size_t>(y - tile.y0_) * tileWidth + (x - tile.x0_);
+      const std::size_t to = static_cast<std::size_t>(y) * width_ + x;
+      weightedSum_[to] += tile.weightedSum_[from];
+      weightSum_[to] += tile.weightSum_[from];
+    }
+  }
+}
+
+Image Film::resolve() const {
+  Image image(width_, height_);
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
+      if (weightSum_[i] > 0.0f) image.at(x, y) = weightedSum_[i] / weightSum_[i];
+    }
+  }
+  return image;
+}
+
+FilmTile::FilmTile(const ReconstructionFilter& filter, int x0, int y0, int x1, int y1)
+    : filter_(&filter),
+      x0_(x0),
+      y0_(y0),
+      x1_(x1),
+      y1_(y1),
+      weightedSum_(static_cast<std::size_t>(x1 - x0) * (y1 - y0), Color(0.0f)),
+      weightSum_(static_cast<std::size_t>(x1 - x0) * (y1 - y0), 0.0f) {}
+
+void FilmTile::addSample(const glm::ivec2& pixel, const Vec2& offset, const Color& color) {
+  assert(pixel.x >= x0_ && pixel.x < x1_ && pixel.y >= y0_ && pixel.y < y1_);
+  const int tileWidth = x1_ - x0_;
+  const auto index = [&](int x, int y) {
+    return static_cast<std::size_t>(y - y0_) * tileWidth + (x - x0_);
+  };
+  if (filter_->kind() == FilterKind::Box) {  // the common case: its own pixel, weight 1
+    weightedSum_[index(pixel.x, pixel.y)] += color;
+    weightSum_[index(pixel.x, pixel.y)] += 1.0f;
+    return;
+  }
+  // Every pixel whose centre lies within the filter's radius of the sample.
+  const int reach = static_cast<int>(std::ceil(filter_->radius()));
+  for (int y = std::max(y0_, pixel.y - reach); y <= std::min(y1_ - 1, pixel.y + reach); ++y) {
+    for (int x = std::max(x0_, pixel.x - reach); x <= std::min(x1_ - 1, pixel.x + reach); ++x) {
+      const Vec2 fromCentre = Vec2(static_cast<float>(pixel.x - x), static_cast<float>(pixel.y - y)) +
+                              (offset - Vec2(0.5f));
+      const float weight = filter_->weight(fromCentre);
+      if (weight == 0.0f) continue;
+      weightedSum_[index(x, y)] += weight * color;
+      weightSum_[index(x, y)] += weight;
+    }
+  }
+}
+
+}  // namespace rise

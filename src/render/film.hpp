@@ -1,0 +1,71 @@
+#pragma once
+
+#include <vector>
+
+#include "core/image.hpp"
+#include "core/sampling.hpp"
+#include "render/tiles.hpp"
+
+namespace rise {
+
+// A reconstruction filter: how much a sample counts towards a pixel, by its
+// offset from the pixel's centre, in pixels.
+class ReconstructionFilter {
+ public:
+  explicit ReconstructionFilter(FilterKind kind);
+
+  FilterKind kind() const { return kind_; }
+  float radius() const { return radius_; }
+  float weight(const Vec2& offset) const;
+
+ private:
+  float weight1D(float offset) const;
+
+  FilterKind kind_;
+  float radius_;
+};
+
+class FilmTile;
+
+// The image being reconstructed from samples: each pixel keeps the sum of
+// its samples' weighted colours and the sum of their weights. Threads add
+// samples to tiles of their own; the tiles are merged in tile order once
+// they are all done, so the sums, and the image, do not depend on the
+// number of threads.
+class Film {
+ public:
+  Film(int width, int height, FilterKind filter);
+
+  // An empty tile covering `tile`'s pixels and the margin its samples reach.
+  FilmTile tileFor(const Tile& tile) const;
+  void merge(const FilmTile& tile);
+
+  // The weighted average at every pixel; black where no sample reached.
+  Image resolve() const;
+
+ private:
+  int width_;
+  int height_;
+  ReconstructionFilter filter_;
+  std::vector<Color> weightedSum_;
+  std::vector<float> weightSum_;
+};
+
+class FilmTile {
+ public:
+  // Adds a sample taken in `pixel` at `offset` from its top-left corner
+  // (each coordinate in [0, 1)). Given apart, the two stay exact where their
+  // float sum would round into the next pixel.
+  void addSample(const glm::ivec2& pixel, const Vec2& offset, const Color& color);
+
+ private:
+  friend class Film;
+  FilmTile(const ReconstructionFilter& filter, int x0, int y0, int x1, int y1);
+
+  const ReconstructionFilter* filter_;
+  int x0_, y0_, x1_, y1_;  // the pixels covered, margin included: [x0, x1) x [y0, y1)
+  std::vector<Color> weightedSum_;
+  std::vector<float> weightSum_;
+};
+
+}  // namespace rise

@@ -1,0 +1,67 @@
+#include "render/film.hpp"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+
+namespace rise {
+namespace {
+
+TEST(ReconstructionFilter, WeightsByDistanceFromTheCentre) {
+  const ReconstructionFilter box(FilterKind::Box);
+  EXPECT_EQ(box.weight({0.49f, -0.5f}), 1.0f);
+  EXPECT_EQ(box.weight({0.5f, 0.0f}), 0.0f);  // half-open: the border counts for one pixel
+  const ReconstructionFilter tent(FilterKind::Tent);
+  EXPECT_FLOAT_EQ(tent.weight({0.5f, 0.0f}), 0.5f);
+  EXPECT_FLOAT_EQ(tent.weight({0.5f, 0.5f}), 0.25f);
+  EXPECT_EQ(tent.weight({1.0f, 0.0f}), 0.0f);
+  const ReconstructionFilter gaussian(FilterKind::Gaussian);
+  EXPECT_GT(gaussian.weight({0.0f, 0.0f}), gaussian.weight({0.7f, 0.0f}));
+  EXPECT_EQ(gaussian.weight({1.5f, 0.0f}), 0.0f);
+}
+
+// Merges every tile of a film that received `perPixel` samples of `color` at
+// the given offsets in each pixel.
+Image filmOf(FilterKind filter, int width, int height,
+             const std::function<Color(int, int)>& color, const std::vector<Vec2>& offsets) {
+  Film film(width, height, filter);
+  for (const Tile& tile : makeTiles(width, height, 4)) {
+    FilmTile filmTile = film.tileFor(tile);
+    for (int y = tile.y0; y < tile.y1; ++y)
+      for (int x = tile.x0; x < tile.x1; ++x)
+        for (const Vec2& offset : offsets) filmTile.addSample({x, y}, offset, color(x, y));
+    film.merge(filmTile);
+  }
+  return film.resolve();
+}
+
+TEST(Film, BoxAveragesEachPixelsOwnSamples) {
+  const Image image = filmOf(
+      FilterKind::Box, 8, 8, [](int x, int) { return Color(static_cast<float>(x)); },
+      {{0.25f, 0.25f}, {0.75f, 0.75f}});
+  for (int x = 0; x < 8; ++x) EXPECT_FLOAT_EQ(image.at(x, 3).r, static_cast<float>(x));
+}
+
+TEST(Film, EveryFilterKeepsAConstantImageConstant) {
+  for (FilterKind filter : {FilterKind::Box, FilterKind::Tent, FilterKind::Gaussian}) {
+    const Image image = filmOf(
+        filter, 9, 7, [](int, int) { return Color(0.3f, 0.6f, 0.9f); },
+        {{0.1f, 0.2f}, {0.6f, 0.3f}, {0.4f, 0.9f}});
+    for (int y = 0; y < 7; ++y)
+      for (int x = 0; x < 9; ++x) EXPECT_NEAR(image.at(x, y).g, 0.6f, 1e-5f) << toString(filter);
+  }
+}
+
+// A tent filter blends a pixel with its neighbours across tile borders: an
+// edge between 0 and 1 softens, and comes out the same whatever the tiling.
+TEST(Film, TentBlendsNeighboursAcrossTiles) {
+  const auto step = [](int x, int) { return Color(x < 4 ? 0.0f : 1.0f); };
+  const Image image = filmOf(FilterKind::Tent, 8, 8, step, {{0.25f, 0.5f}, {0.75f, 0.5f}});
+  EXPECT_FLOAT_EQ(image.at(0, 0).r, 0.0f);
+  EXPECT_GT(image.at(3, 0).r, 0.0f);
+  EXPECT_LT(image.at(4, 0).r, 1.0f);
+  EXPECT_FLOAT_EQ(image.at(3, 0).r + image.at(4, 0).r, 1.0f);  // symmetric about the edge
+}
+
+}  // namespace
+}  // namespace rise

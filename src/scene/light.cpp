@@ -1,0 +1,41 @@
+#include "scene/light.hpp"
+
+#include <cmath>
+
+#include "core/sampling.hpp"
+
+namespace rise {
+
+void orthonormalBasis(const Vec3& axis, Vec3& u, Vec3& v) {
+  // Frisvad's construction as revised by Duff et al. (JCGT 2017): branchless
+  // but for the sign, and exact for every unit axis.
+  const float sign = std::copysign(1.0f, axis.z);
+  const float a = -1.0f / (sign + axis.z);
+  const float b = axis.x * axis.y * a;
+  u = Vec3(1.0f + sign * axis.x * axis.x * a, sign * b, -sign * axis.x);
+  v = Vec3(b, sign + axis.y * axis.y * a, -axis.y);
+}
+
+DiskLight::DiskLight(Vec3 center, Vec3 normal, float radius, Color color)
+    : Light(color), center_(center) {
+  orthonormalBasis(glm::normalize(normal), axisU_, axisV_);
+  axisU_ *= radius;
+  axisV_ *= radius;
+}
+
+LightSample DiskLight::illuminate(const Vec3& point, const Vec2& u) const {
+  const Vec2 disk = squareToDisk(u);
+  return towards(point, center_ + disk.x * axisU_ + disk.y * axisV_);
+}
+
+LightSample SphereLight::illuminate(const Vec3& point, const Vec2& u) const {
+  const Vec3 toCentre = center_ - point;
+  const float distance = glm::length(toCentre);
+  if (distance <= radius_) return towards(point, center_);  // inside the light
+  Vec3 across, up;
+  orthonormalBasis(toCentre / distance, across, up);
+  const Vec2 disk = radius_ * squareToDisk(u);
+  return towards(point, center_ + disk.x * across + disk.y * up);
+}
+
+}  // namespace rise

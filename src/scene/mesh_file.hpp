@@ -1,0 +1,46 @@
+// Triangle meshes read from model files through the Open Asset Import Library
+// (Assimp): Wavefront OBJ, Stanford PLY, Quake II MD2, glTF, OFF, 3DS and the
+// other formats it reads. A file's meshes are merged into one, each placed by
+// the transforms of the nodes above it, so that the model stands as its
+// author built it (Assimp turns MD2's z-up models y-up this way).
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <utility>
+
+#include "scene/mesh_geometry.hpp"
+
+namespace rise {
+
+// Why a model file cannot be used; the scene loader adds which file, and
+// where the scene names it.
+class MeshFileError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The triangles of the model in `path`, with a unit normal at every vertex
+// (the file's, or, where it has none, the average of the faces around the
+// vertex, except across creases sharper than kCreaseAngleDegrees) and the
+// texture coordinates of its first channel when it has them. `md2Keyframe`
+// picks the pose of an MD2 model, whose vertices are then kept one per
+// triangle corner, so that the vertices of two keyframes match one to one.
+// Throws MeshFileError for a missing, unreadable, unsupported, corrupt or
+// empty file.
+MeshGeometry loadMeshFile(const std::filesystem::path& path, int md2Keyframe = 0);
+
+inline constexpr float kCreaseAngleDegrees = 80.0f;
+
+// Whether the file is a Quake II model, by its extension.
+bool isMd2File(const std::filesystem::path& path);
+
+// The number of keyframes of an MD2 model, from its 68-byte header, which
+// must promise no more keyframes than the file holds.
+int md2KeyframeCount(const std::filesystem::path& path);
+
+// Two keyframes of an MD2 model: the same triangles in two poses.
+std::pair<MeshGeometry, MeshGeometry> loadMd2Keyframes(const std::filesystem::path& path, int first,
+                                                       int second);
+
+}  // namespace rise

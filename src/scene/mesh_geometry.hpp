@@ -1,0 +1,31 @@
+// The data of a triangle mesh as files and scenes give it: shared vertices,
+// each with a unit normal and texture coordinates when the model has them, and
+// triangles as triples of vertex indices.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/math.hpp"
+
+namespace rise {
+
+struct MeshGeometry {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;  // one per position, or none; a zero normal is unknown
+  std::vector<Vec2> uvs;      // one per position, or none
+  std::vector<std::array<int, 3>> triangles;
+};
+
+// The geometry moved by an affine map: positions by it, normals by its
+// inverse transpose. A map that mirrors reverses each triangle's winding, so
+// that the winding still turns counter-clockwise around the side the normals
+// face.
+MeshGeometry transformed(MeshGeometry geometry, const Mat4& map);
+
+// Appends `part` to `whole`, its indices shifted past the vertices already
+// there. Normals and texture coordinates that only one side has are padded
+// with zeros.
+void append(MeshGeometry& whole, const MeshGeometry& part);
+
+}  // namespace rise

@@ -1,0 +1,75 @@
+// Shapes as triangles, for the algorithms that draw polygons instead of
+// tracing rays (raster/). Every vertex lies on the exact surface and carries
+// the surface's normal and texture coordinates there, so that interpolating
+// them across a triangle approximates the surface the ray tracer sees: the
+// finer the tessellation, the closer.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "core/math.hpp"
+
+namespace rise {
+
+class Shape;
+
+struct TessellationSettings {
+  // How finely curved surfaces are cut: a circle becomes 4 * level segments,
+  // a sphere's meridian 2 * level.
+  int level = 8;
+  // The side of the square that stands in for an infinite plane, centred at
+  // the foot of the perpendicular from `viewpoint`, under the camera.
+  float planeSize = 1000.0f;
+  Vec3 viewpoint{0.0f};
+  // The instant drawn: moving shapes are tessellated where they are then.
+  float time = 0.0f;
+};
+
+// A point of a surface, as a corner of the triangles that cover it.
+struct SurfaceVertex {
+  Vec3 position;
+  Vec3 normal;  // unit: the exact surface's normal, or a flat face's
+  Vec2 uv{0.0f};
+};
+
+// The triangles that cover one shape. Each winds counter-clockwise seen from
+// the side its vertices' normals face (outside, for a solid).
+struct Tessellation {
+  std::vector<SurfaceVertex> vertices;
+  std::vector<std::array<int, 3>> triangles;
+  // The triangles close around a solid: seen from outside it, a triangle
+  // facing away from the eye is always hidden behind one facing it, so it can
+  // be culled. Open surfaces (planes, polygons, most meshes) are seen from
+  // both sides.
+  bool enclosesSolid = false;
+
+  int addVertex(const SurfaceVertex& vertex);
+  // A triangle; one with a repeated corner (a sphere's pole) is left out.
+  void addTriangle(int a, int b, int c);
+  // A planar convex polygon, as the fan of triangles from its first corner.
+  void addConvexPolygon(std::span<const int> corners);
+};
+
+// Tessellates `shape`, defined in its own space, and places the result in the
+// world by an affine map: positions by the map, normals by its inverse
+// transpose, and the winding reversed when the map mirrors, so that it still
+// turns counter-clockwise around the normals.
+void tessellatePlaced(const Shape& shape, const Mat4& worldFromObject,
+                      const TessellationSettings& settings, Tessellation& out);
+
+// Whether the triangles close around a solid: welded where their corners
+// coincide, every edge is shared by exactly two triangles that run along it
+// in opposite directions (a closed, consistently wound surface).
+bool enclosesSolid(std::span<const Vec3> positions, std::span<const std::array<int, 3>> triangles);
+
+// The number of segments that approximate a full circle at this level.
+int segmentsPerTurn(int level);
+
+// The unit directions across a unit axis at `segments` equal angles around
+// it, turning counter-clockwise seen from the axis's tip; the same for the
+// same axis, so that rings around one axis line up.
+std::vector<Vec3> directionsAround(const Vec3& axis, int segments);
+
+}  // namespace rise

@@ -1,0 +1,166 @@
+#include "scene/tessellation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+
+#include "scene/shapes/box.hpp"
+#include "scene/shapes/cone.hpp"
+#include "scene/shapes/convex_polygon.hpp"
+#include "scene/shapes/cylinder.hpp"
+#include "scene/shapes/plane.hpp"
+#include "scene/shapes/sphere.hpp"
+#include "scene/shapes/transformed_shape.hpp"
+#include "scene/shapes/triangle_mesh.hpp"
+#include "scene/transform.hpp"
+
+namespace rise {
+namespace {
+
+Tessellation tessellate(const Shape& shape, int level = 4) {
+  TessellationSettings settings;
+  settings.level = level;
+  settings.viewpoint = Vec3(3.0f, 5.0f, -7.0f);
+  Tessellation tessellation;
+  shape.tessellate(settings, tessellation);
+  return tessellation;
+}
+
+std::vector<Vec3> positionsOf(const Tessellation& tessellation) {
+  std::vector<Vec3> positions;
+  for (const SurfaceVertex& vertex : tessellation.vertices) positions.push_back(vertex.position);
+  return positions;
+}
+
+// Every triangle turns counter-clockwise around the normals at its corners:
+// seen from outside, for a solid.
+void expectWoundAroundItsNormals(const Tessellation& tessellation) {
+  for (const auto& [a, b, c] : tessellation.triangles) {
+    const SurfaceVertex& p = tessellation.vertices[a];
+    const SurfaceVertex& q = tessellation.vertices[b];
+    const SurfaceVertex& r = tessellation.vertices[c];
+    const Vec3 winding = glm::cross(q.position - p.position, r.position - p.position);
+    EXPECT_GT(glm::dot(winding, p.normal + q.normal + r.normal), 0.0f);
+  }
+  for (const SurfaceVertex& vertex : tessellation.vertices)
+    EXPECT_NEAR(glm::length(vertex.normal), 1.0f, 1e-5f);
+}
+
+void expectClosedSolid(const Tessellation& tessellation) {
+  EXPECT_TRUE(tessellation.enclosesSolid);
+  EXPECT_TRUE(enclosesSolid(positionsOf(tessellation), tessellation.triangles));
+  expectWoundAroundItsNormals(tessellation);
+}
+
+TEST(Tessellation, PutsASpheresVerticesOnItWithItsNormals) {
+  const Vec3 centre(1.0f, -2.0f, 0.5f);
+  const Tessellation sphere = tessellate(Sphere(centre, 1.5f, 0), 4);
+  for (const SurfaceVertex& vertex : sphere.vertices) {
+    EXPECT_NEAR(glm::length(vertex.position - centre), 1.5f, 1e-5f);
+    EXPECT_NEAR(glm::length(vertex.normal - (vertex.position - centre) / 1.5f), 0.0f, 1e-5f);
+  }
+  // 16 segments around, 8 rings: quads between the rings, triangles at the poles.
+  EXPECT_EQ(sphere.triangles.size(), 16u * 6u * 2u + 2u * 16u);
+  expectClosedSolid(sphere);
+}
+
+TEST(Tessellation, PutsACylindersVerticesOnItsSideAndCaps) {
+  const Vec3 base(0.0f, 1.0f, 0.0f), axis = glm::normalize(Vec3(1.0f, 1.0f, 0.0f));
+  const Tessellation cylinder = tessellate(Cylinder(base, axis, 0.5f, 2.0f, 0), 3);
+  for (const SurfaceVertex& vertex : cylinder.vertices) {
+    const Vec3 offset = vertex.position - base;
+    const float along = glm::dot(offset, axis);
+    EXPECT_NEAR(glm::length(offset - along * axis), 0.5f, 1e-5f);
+    EXPECT_TRUE(std::abs(along) < 1e-5f || std::abs(along - 2.0f) < 1e-5f);
+  }
+  expectClosedSolid(cylinder);
+}
+
+TEST(Tessellation, PutsAConesVerticesOnItsSideAndBase) {
+  const Vec3 base(0.0f), axis(0.0f, 1.0f, 0.0f);
+  const Tessellation cone = tessellate(Cone(base, axis, 1.0f, 2.0f, 0), 3);
+  for (const SurfaceVertex& vertex : cone.vertices) {
+    const float height = vertex.position.y;
+    const float radius = std::hypot(vertex.position.x, vertex.position.z);
+    EXPECT_NEAR(radius, 1.0f - 0.5f * height, 1e-5f);
+    // The side's normal leans up by atan(radius / height).
+    if (vertex.normal.y > 0.0f) EXPECT_NEAR(vertex.normal.y, 1.0f / std::sqrt(5.0f), 1e-5f);
+  }
+  expectClosedSolid(cone);
+}
+
+TEST(Tessellation, CoversABoxWithTwoTrianglesAFace) {
+  const Tessellation box = tessellate(Box(Vec3(-1.0f, 0.0f, 2.0f), Vec3(1.0f, 3.0f, 4.0f), 0));
+  EXPECT_EQ(box.triangles.size(), 12u);
+  for (const SurfaceVertex& vertex : box.vertices) {
+    // On the face its normal names.
+    const int axis = vertex.normal.x != 0.0f ? 0 : (vertex.normal.y != 0.0f ? 1 : 2);
+    const float face = vertex.normal[axis] > 0.0f ? Vec3(1.0f, 3.0f, 4.0f)[axis]
+                                                  : Vec3(-1.0f, 0.0f, 2.0f)[axis];
+    EXPECT_EQ(vertex.position[axis], face);
+  }
+  expectClosedSolid(box);
+}
+
+// The square stands under the viewpoint, (3, 5, -7), whose foot on the plane
+// y = 1 is (3, 1, -7), and reaches planeSize / 2 from it.
+TEST(Tessellation, CentresAPlanesSquareUnderTheViewpoint) {
+  const Plane plane(Vec3(0.0f, 1.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f), 0);
+  const Tessellation square = tessellate(plane);
+  Vec3 low(kInfinity), high(-kInfinity);
+  for (const SurfaceVertex& vertex : square.vertices) {
+    low = glm::min(low, vertex.position);
+    high = glm::max(high, vertex.position);
+    EXPECT_EQ(vertex.normal, Vec3(0.0f, 1.0f, 0.0f));
+    // The plane's texture coordinates: u = x, v = -z from the plane's point.
+    EXPECT_NEAR(vertex.uv.x, vertex.position.x, 1e-3f);
+    EXPECT_NEAR(vertex.uv.y, -vertex.position.z, 1e-3f);
+  }
+  EXPECT_NEAR(low.x, 3.0f - 500.0f, 1e-2f);
+  EXPECT_NEAR(high.z, -7.0f + 500.0f, 1e-2f);
+  EXPECT_EQ(low.y, 1.0f);
+  EXPECT_EQ(high.y, 1.0f);
+  EXPECT_FALSE(square.enclosesSolid);
+  expectWoundAroundItsNormals(square);
+}
+
+TEST(Tessellation, FansAConvexPolygon) {
+  const std::vector<Vec3> corners = {Vec3(0.0f), Vec3(2.0f, 0.0f, 0.0f), Vec3(3.0f, 1.0f, 0.0f),
+                                     Vec3(1.0f, 2.0f, 0.0f), Vec3(-1.0f, 1.0f, 0.0f)};
+  const Tessellation polygon = tessellate(ConvexPolygon(corners, 0));
+  EXPECT_EQ(polygon.triangles.size(), 3u);
+  EXPECT_FALSE(polygon.enclosesSolid);
+  expectWoundAroundItsNormals(polygon);
+}
+
+TEST(Tessellation, KnowsWhichMeshesCloseAroundASolid) {
+  const std::vector<Vec3> corners = {Vec3(0.0f), Vec3(1.0f, 0.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f),
+                                     Vec3(0.0f, 0.0f, 1.0f)};
+  const std::vector<std::array<int, 3>> tetrahedron = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  EXPECT_TRUE(tessellate(TriangleMesh(corners, tetrahedron, 0)).enclosesSolid);
+  std::vector<std::array<int, 3>> open(tetrahedron.begin(), tetrahedron.end() - 1);
+  EXPECT_FALSE(tessellate(TriangleMesh(corners, open, 0)).enclosesSolid);
+  std::vector<std::array<int, 3>> inconsistent = tetrahedron;
+  std::swap(inconsistent[3][0], inconsistent[3][1]);
+  EXPECT_FALSE(tessellate(TriangleMesh(corners, inconsistent, 0)).enclosesSolid);
+  expectWoundAroundItsNormals(tessellate(TriangleMesh(corners, tetrahedron, 0)));
+}
+
+// A mirroring transform turns the winding around; the tessellation turns it
+// back, so that it still winds around the (outward) normals.
+TEST(Tessellation, KeepsTheWindingThroughAMirroringTransform) {
+  TransformSpec mirror;
+  mirror.scale = Vec3(-1.0f, 2.0f, 1.0f);
+  mirror.translate = Vec3(0.0f, 3.0f, 0.0f);
+  const TransformedShape shape(std::make_unique<Sphere>(Vec3(1.0f, 0.0f, 0.0f), 1.0f, 0),
+                               worldFromObject(mirror));
+  const Tessellation placed = tessellate(shape);
+  // The centre moved to (-1, 3, 0); the normals point away from it.
+  for (const SurfaceVertex& vertex : placed.vertices)
+    EXPECT_GT(glm::dot(vertex.normal, vertex.position - Vec3(-1.0f, 3.0f, 0.0f)), 0.0f);
+  expectClosedSolid(placed);
+}
+
+}  // namespace
+}  // namespace rise
