@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -132,6 +133,33 @@ TEST_F(RiseCommand, AnUnwritableOutputExitsWithStatusOne) {
                                        file("no/such/folder/x.png").string());
   EXPECT_EQ(result.status, 1);
   EXPECT_NE(result.output.find("x.png"), std::string::npos) << result.output;
+}
+
+TEST_F(RiseCommand, ComparesEveryAlgorithmOnOneScene) {
+  const CommandResult result =
+      runRise("compare " + example("classic.yaml") + " --width 32 -o " + file("compare").string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  std::ifstream csvFile(file("compare/results.csv"));
+  std::string header;
+  std::getline(csvFile, header);
+  EXPECT_EQ(header.rfind("algorithm,", 0), 0u) << header;
+  EXPECT_NE(header.find("render_seconds"), std::string::npos);
+  int rows = 0;
+  for (std::string line; std::getline(csvFile, line);) {
+    const std::string algorithm = line.substr(0, line.find(','));
+    EXPECT_EQ(readImage(file("compare/" + algorithm + ".png")).width(), 32) << algorithm;
+    ++rows;
+  }
+  EXPECT_EQ(rows, 6);
+  std::ifstream html(file("compare/index.html"));
+  const std::string page{std::istreambuf_iterator<char>(html), {}};
+  for (const char* algorithm : {"ray-tracing", "distributed-ray-tracing", "z-buffer", "scanline",
+                                "depth-sort", "area-subdivision"}) {
+    EXPECT_NE(page.find(std::string("src=\"") + algorithm + ".png\""), std::string::npos)
+        << algorithm;
+  }
+  EXPECT_NE(page.find("<svg"), std::string::npos);  // the bar chart of the times
+  EXPECT_TRUE(fs::exists(file("compare/results.md")));
 }
 
 TEST_F(RiseCommand, ListsTheAlgorithmsWithTheirCitations) {

@@ -168,8 +168,7 @@ const Image& slantedEdgeReference() {
 }
 
 double slantedEdgeError(PixelSampling sampling, std::uint64_t seed) {
-  return rmse(render(slantedEdge(), "ray-tracing", sampling, seed).image,
-              slantedEdgeReference());
+  return rmse(render(slantedEdge(), "ray-tracing", sampling, seed).image, slantedEdgeReference());
 }
 
 TEST(AntiAliasing, ShrinksTheErrorOnASlantedEdge) {
@@ -178,6 +177,17 @@ TEST(AntiAliasing, ShrinksTheErrorOnASlantedEdge) {
   EXPECT_LT(slantedEdgeError(jittered(16), 0), 0.4 * aliased);
   PixelSampling adaptive{16, SamplePattern::Adaptive};
   EXPECT_LT(slantedEdgeError(adaptive, 0), 0.5 * aliased);
+}
+
+// The visible-surface algorithms anti-alias by accumulation: whole frames
+// at jittered sub-pixel offsets, filtered like the ray tracers' samples.
+TEST(AntiAliasing, AppliesToTheVisibleSurfaceAlgorithms) {
+  for (const char* algorithm : {"z-buffer", "scanline", "depth-sort", "area-subdivision"}) {
+    const double aliased = rmse(render(slantedEdge(), algorithm, {}).image, slantedEdgeReference());
+    const RenderResult smooth = render(slantedEdge(), algorithm, jittered(16));
+    EXPECT_LT(rmse(smooth.image, slantedEdgeReference()), 0.4 * aliased) << algorithm;
+    EXPECT_EQ(smooth.stats.value("samples_per_pixel"), 16) << algorithm;
+  }
 }
 
 TEST(AntiAliasing, JitteredBeatsRandomAtTheSameCount) {
@@ -193,7 +203,7 @@ TEST(AntiAliasing, AdaptiveRefinesOnlyWhereCornersDiffer) {
   const PixelSampling adaptive{16, SamplePattern::Adaptive};
   const RenderResult edge = render(slantedEdge(), "ray-tracing", adaptive);
   const double refined = edge.stats.value("adaptive_refined_pixels");
-  EXPECT_GT(refined, 20);          // about one pixel a row along the edge
+  EXPECT_GT(refined, 20);           // about one pixel a row along the edge
   EXPECT_LT(refined, 32 * 32 / 5);  // and nothing away from it
   const RenderResult empty = render(flatScene("", "[]\n", 16, 16), "ray-tracing", adaptive);
   EXPECT_EQ(empty.stats.value("adaptive_refined_pixels"), 0);

@@ -86,7 +86,8 @@ Scene randomSoup(std::uint64_t seed, int count) {
     const float size = uniform(0.3f, 1.2f);
     std::array<Vec3, 3> triangle;
     for (Vec3& corner : triangle)
-      corner = centre + size * Vec3(uniform(-1.0f, 1.0f), uniform(-1.0f, 1.0f), uniform(-1.0f, 1.0f));
+      corner =
+          centre + size * Vec3(uniform(-1.0f, 1.0f), uniform(-1.0f, 1.0f), uniform(-1.0f, 1.0f));
     if (std::any_of(placed.begin(), placed.end(),
                     [&](const auto& other) { return interpenetrate(triangle, other); }))
       continue;

@@ -1,24 +1,19 @@
 // `rise`: the command line of the Realistic Image Synthesis Environment. A thin
-// layer over the library: it parses options, loads the scene, runs one
-// Renderer and writes what it returned.
+// layer over the library: it parses options, loads the scene, runs Renderers
+// and writes what they returned.
 //
 // Exit status: 0 done, 1 an output file could not be written, 2 bad input
 // (a scene file error or a wrong option); on status 2 no image is written.
 #include <CLI/CLI.hpp>
-#include <cmath>
-#include <cstdint>
-#include <optional>
 #include <iostream>
-#include <iterator>
-#include <sstream>
 
+#include "comparison_report.hpp"
 #include "core/image_io.hpp"
 #include "progress_bar.hpp"
 #include "render/buffer_images.hpp"
 #include "render/registry.hpp"
-#include "render/tiles.hpp"
 #include "scene/scene_error.hpp"
-#include "scene/scene_file.hpp"
+#include "settings_options.hpp"
 #include "stats_report.hpp"
 
 namespace rise::cli {
@@ -28,70 +23,58 @@ constexpr int kExitOutputError = 1;
 constexpr int kExitBadInput = 2;
 
 struct RenderOptions {
-  std::string scenePath;
+  SettingsOptions settings;
   std::filesystem::path output;
   std::string algorithm = "ray-tracing";
-  int width = 0;  // 0: as the scene says
-  int height = 0;
-  int threads = 0;
-  int maxDepth = 5;
   std::filesystem::path statsPath;
   Encoding encoding = Encoding::Srgb;
   std::vector<std::string> buffers;
-  Accel accel = Accel::Bvh;
-  std::optional<int> samples;  // unset: as the scene says
-  std::optional<SamplePattern> pattern;
-  std::optional<FilterKind> filter;
-  std::optional<float> adaptiveThreshold;
-  std::uint64_t seed = 0;
-  Shading shading = Shading::Phong;
-  bool noCulling = false;
-  int tessellation = 8;
-  float planeSize = 1000.0f;
 };
 
-// The scene's pixel sampling with the command line's choices over it.
-PixelSampling pixelSampling(const RenderOptions& options, const PixelSampling& scene) {
-  PixelSampling sampling = chooseSampling(scene, options.samples, options.pattern);
-  if (options.filter) sampling.filter = *options.filter;
-  if (options.adaptiveThreshold) sampling.adaptiveThreshold = *options.adaptiveThreshold;
-  return sampling;
+struct CompareOptions {
+  SettingsOptions settings;
+  std::filesystem::path directory;
+  std::vector<std::string> algorithms;  // empty: every one
+  Encoding encoding = Encoding::Srgb;
+};
+
+// A scene and the settings to render it with, or the exit status of the
+// message already printed about them.
+struct Job {
+  Scene scene;
+  RenderSettings settings;
+};
+
+std::variant<Job, int> prepare(const SettingsOptions& options) {
+  Job job;
+  try {
+    job.scene = loadScene(options.scenePath);
+  } catch (const SceneError& error) {
+    std::cerr << error.what() << "\n";
+    return kExitBadInput;
+  }
+  std::variant<RenderSettings, std::string> settings = makeSettings(options, job.scene);
+  if (const auto* problem = std::get_if<std::string>(&settings)) {
+    std::cerr << "rise: " << *problem << "\n";
+    return kExitBadInput;
+  }
+  job.settings = std::get<RenderSettings>(settings);
+  return job;
 }
 
-std::map<std::string, Accel> accelNamesToValues() {
-  std::map<std::string, Accel> names;
-  for (Accel accel : kAllAccels) names.emplace(accelName(accel), accel);
-  return names;
+RenderResult renderWithProgress(const Renderer& renderer, const Job& job) {
+  ProgressBar progress(std::string(renderer.name()));
+  return renderTimed(renderer, job.scene, job.settings, progress);
 }
 
-std::string availableAccelNames() {
-  std::string names;
-  for (Accel accel : availableAccels())
-    names += (names.empty() ? "" : ", ") + std::string(accelName(accel));
-  return names;
+RenderDescription describe(const Job& job, std::string_view algorithm) {
+  return {job.scene.source, std::string(algorithm), job.settings.width, job.settings.height,
+          job.settings.threads};
 }
 
-Scene loadScene(const std::string& path) {
-  if (path != "-") return loadSceneFile(path);
-  const std::string text{std::istreambuf_iterator<char>(std::cin), {}};
-  return rise::loadScene(text, "<stdin>");
-}
-
-// The image size: the scene's, unless the command line gives one; a single
-// dimension keeps the scene's aspect ratio.
-std::pair<int, int> imageSize(const RenderOptions& options, const ImageSpec& image) {
-  const double aspect = static_cast<double>(image.width) / image.height;
-  if (options.width > 0 && options.height > 0) return {options.width, options.height};
-  if (options.width > 0)
-    return {options.width, std::max(1, static_cast<int>(std::lround(options.width / aspect)))};
-  if (options.height > 0)
-    return {std::max(1, static_cast<int>(std::lround(options.height * aspect))), options.height};
-  return {image.width, image.height};
-}
-
-std::filesystem::path defaultOutput(const std::string& scenePath) {
-  if (scenePath == "-") return "render.png";
-  return std::filesystem::path(scenePath).filename().replace_extension(".png");
+std::filesystem::path defaultOutput(const std::string& scenePath, const std::string& extension) {
+  if (scenePath == "-") return "render" + extension;
+  return std::filesystem::path(scenePath).filename().replace_extension(extension);
 }
 
 // out.png -> out.depth.png: the auxiliary buffers are written beside the image.
@@ -112,53 +95,21 @@ void writeBuffer(const RenderResult& result, const std::string& name,
 }
 
 int render(const RenderOptions& options) {
+  std::variant<Job, int> prepared = prepare(options.settings);
+  if (const int* status = std::get_if<int>(&prepared)) return *status;
+  const Job& job = std::get<Job>(prepared);
   const Renderer& renderer = *findRenderer(options.algorithm);
-  Scene scene;
-  try {
-    scene = loadScene(options.scenePath);
-  } catch (const SceneError& error) {
-    std::cerr << error.what() << "\n";
-    return kExitBadInput;
-  }
 
-  RenderSettings settings;
-  std::tie(settings.width, settings.height) = imageSize(options, scene.image);
-  settings.threads = resolveThreadCount(options.threads);
-  settings.maxDepth = options.maxDepth;
-  settings.shading = options.shading;
-  settings.backfaceCulling = !options.noCulling;
-  settings.tessellation = options.tessellation;
-  settings.planeSize = options.planeSize;
-  if (!isAvailable(options.accel)) {
-    std::cerr << "rise: --accel " << accelName(options.accel)
-              << ": this build has no such structure (Embree was not found when it was built); "
-              << "available: " << availableAccelNames() << "\n";
-    return kExitBadInput;
-  }
-  settings.accel = options.accel;
-  settings.sampling = pixelSampling(options, scene.image.sampling);
-  settings.seed = options.seed;
-  if (const std::string problem = samplingProblem(settings.sampling); !problem.empty()) {
-    std::cerr << "rise: " << problem << "\n";
-    return kExitBadInput;
-  }
-
-  RenderResult result;
-  {
-    ProgressBar progress(std::string(renderer.name()));
-    result = renderTimed(renderer, scene, settings, progress);
-  }
+  const RenderResult result = renderWithProgress(renderer, job);
   for (const std::string& name : options.buffers) {
     if (!result.buffers.contains(name)) {
       std::cerr << "rise: " << renderer.name() << " has no '" << name << "' buffer\n";
       return kExitBadInput;
     }
   }
-
   const std::filesystem::path output =
-      options.output.empty() ? defaultOutput(options.scenePath) : options.output;
-  const RenderDescription description{scene.source, std::string(renderer.name()), settings.width,
-                                      settings.height, settings.threads};
+      options.output.empty() ? defaultOutput(options.settings.scenePath, ".png") : options.output;
+  const RenderDescription description = describe(job, renderer.name());
   try {
     writeImage(result.image, output, options.encoding);
     for (const std::string& name : options.buffers) writeBuffer(result, name, output);
@@ -169,6 +120,33 @@ int render(const RenderOptions& options) {
   }
   printStats(std::cerr, description, result.stats);
   std::cerr << "wrote " << output.string() << "\n";
+  return 0;
+}
+
+int compare(const CompareOptions& options) {
+  std::variant<Job, int> prepared = prepare(options.settings);
+  if (const int* status = std::get_if<int>(&prepared)) return *status;
+  const Job& job = std::get<Job>(prepared);
+
+  std::vector<ComparedRender> renders;
+  for (const Renderer* renderer : allRenderers()) {
+    const std::string name(renderer->name());
+    if (!options.algorithms.empty() &&
+        std::find(options.algorithms.begin(), options.algorithms.end(), name) ==
+            options.algorithms.end())
+      continue;
+    renders.push_back({name, std::string(renderer->summary()), renderWithProgress(*renderer, job)});
+    std::cerr << name << ": " << renders.back().result.stats.value("render_seconds") << " s\n";
+  }
+  const std::filesystem::path directory =
+      options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
+  try {
+    writeComparison(directory, job.scene.source, renders, options.encoding);
+  } catch (const std::exception& error) {
+    std::cerr << "rise: " << error.what() << "\n";
+    return kExitOutputError;
+  }
+  std::cerr << "wrote " << (directory / "index.html").string() << "\n";
   return 0;
 }
 
@@ -197,85 +175,50 @@ std::vector<std::string> algorithmNames() {
   return names;
 }
 
+CLI::CheckedTransformer encodings() {
+  return CLI::CheckedTransformer(
+      std::map<std::string, Encoding>{{"srgb", Encoding::Srgb}, {"linear", Encoding::Linear}},
+      CLI::ignore_case);
+}
+
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
   CLI::App* command = app.add_subcommand("render", "Render a scene file to an image");
-  command->add_option("scene", options.scenePath, "Scene file (YAML or JSON), or - to read stdin")
-      ->required();
+  addSettingsOptions(*command, options.settings);
   command->add_option("-o,--output", options.output,
                       "Image to write: .png, .ppm or .exr (default: the scene's name, .png)");
   command->add_option("-a,--algorithm", options.algorithm, "Algorithm (see `rise algorithms`)")
       ->check(CLI::IsMember(algorithmNames()));
-  command->add_option("--width", options.width, "Image width in pixels (default: the scene's)")
-      ->check(CLI::PositiveNumber);
-  command->add_option("--height", options.height, "Image height in pixels (default: the scene's)")
-      ->check(CLI::PositiveNumber);
-  command->add_option("--threads", options.threads, "Worker threads (default: one per core)")
-      ->check(CLI::NonNegativeNumber);
-  command
-      ->add_option("--max-depth", options.maxDepth,
-                   "Longest ray path of the ray tracers; the primary ray is 1")
-      ->check(CLI::Range(1, 64));
-  command->add_option("--samples", options.samples,
-                      "Samples a pixel (default: the scene's, or 1); alone, picks jittered")
-      ->check(CLI::PositiveNumber);
-  command
-      ->add_option("--pattern", options.pattern,
-                   "Where the samples go: none, regular, jittered, random or adaptive")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, SamplePattern>{{"none", SamplePattern::None},
-                                               {"regular", SamplePattern::Regular},
-                                               {"jittered", SamplePattern::Jittered},
-                                               {"random", SamplePattern::Random},
-                                               {"adaptive", SamplePattern::Adaptive}},
-          CLI::ignore_case));
-  command
-      ->add_option("--filter", options.filter, "Reconstruction filter: box, tent or gaussian")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, FilterKind>{{"box", FilterKind::Box},
-                                            {"tent", FilterKind::Tent},
-                                            {"gaussian", FilterKind::Gaussian}},
-          CLI::ignore_case));
-  command->add_option("--threshold", options.adaptiveThreshold,
-                      "Adaptive pattern: the corner difference that is refined (default 0.05)")
-      ->check(CLI::PositiveNumber);
-  command->add_option("--seed", options.seed,
-                      "Seed of the random samples: the same seed, the same image");
-  command
-      ->add_option("--accel", options.accel,
-                   "Acceleration structure: none, spheres, bvh (default) or embree")
-      ->transform(CLI::CheckedTransformer(accelNamesToValues(), CLI::ignore_case));
-  command
-      ->add_option("--shading", options.shading,
-                   "Visible-surface algorithms: flat, gouraud or phong (default)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, Shading>{{"flat", Shading::Flat},
-                                         {"gouraud", Shading::Gouraud},
-                                         {"phong", Shading::Phong}},
-          CLI::ignore_case));
-  command->add_flag("--no-cull", options.noCulling,
-                    "Visible-surface algorithms: keep the back faces of solids");
-  command
-      ->add_option("--tessellation", options.tessellation,
-                   "Visible-surface algorithms: a circle becomes 4 x N segments (default 8)")
-      ->check(CLI::Range(1, 256));
-  command
-      ->add_option("--plane-size", options.planeSize,
-                   "Visible-surface algorithms: the side of the square drawn for a plane "
-                   "(default 1000)")
-      ->check(CLI::PositiveNumber);
   command->add_option("--stats", options.statsPath, "Also write the time and counters as JSON");
   command
       ->add_option("--encoding", options.encoding,
                    "srgb (the display standard) or linear (raw values)")
-      ->transform(CLI::CheckedTransformer(
-          std::map<std::string, Encoding>{{"srgb", Encoding::Srgb}, {"linear", Encoding::Linear}},
-          CLI::ignore_case));
+      ->transform(encodings());
   command
       ->add_option("--aov", options.buffers,
                    "Auxiliary buffers to write beside the image: depth, normal, cost, face "
                    "(face: the visible-surface algorithms only)")
       ->delimiter(',')
       ->check(CLI::IsMember({"depth", "normal", "cost", "face"}));
+  return command;
+}
+
+CLI::App* addCompareCommand(CLI::App& app, CompareOptions& options) {
+  CLI::App* command = app.add_subcommand(
+      "compare",
+      "Render a scene with every algorithm: images, a table of times and counters "
+      "(Markdown, CSV) and an HTML page");
+  addSettingsOptions(*command, options.settings);
+  command->add_option("-o,--output", options.directory,
+                      "Folder to write into (default: the scene's name)");
+  command
+      ->add_option("--algorithms", options.algorithms,
+                   "Only these algorithms, separated by commas (default: all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(algorithmNames()));
+  command
+      ->add_option("--encoding", options.encoding,
+                   "srgb (the display standard) or linear (raw values)")
+      ->transform(encodings());
   return command;
 }
 
@@ -287,6 +230,8 @@ int run(int argc, char** argv) {
 
   RenderOptions renderOptions;
   const CLI::App* renderCommand = addRenderCommand(app, renderOptions);
+  CompareOptions compareOptions;
+  const CLI::App* compareCommand = addCompareCommand(app, compareOptions);
 
   std::string validatePath;
   CLI::App* validateCommand =
@@ -302,6 +247,7 @@ int run(int argc, char** argv) {
     return app.exit(error) == 0 ? 0 : kExitBadInput;
   }
   if (*renderCommand) return render(renderOptions);
+  if (*compareCommand) return compare(compareOptions);
   if (*validateCommand) return validate(validatePath);
   if (*algorithmsCommand) listAlgorithms();
   return 0;

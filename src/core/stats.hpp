@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -14,6 +15,19 @@ class Stats {
   void add(std::string name, double value) { entries_.emplace_back(std::move(name), value); }
 
   const std::vector<std::pair<std::string, double>>& entries() const { return entries_; }
+
+  // Adds each of `other`'s values to the value of the same name, or appends
+  // it: the counters of several passes summed.
+  void accumulate(const Stats& other) {
+    for (const auto& [name, value] : other.entries_) {
+      auto same = std::find_if(entries_.begin(), entries_.end(),
+                               [&](const auto& entry) { return entry.first == name; });
+      if (same == entries_.end())
+        entries_.emplace_back(name, value);
+      else
+        same->second += value;
+    }
+  }
 
   // The value of `name`, or 0 when it was not recorded.
   double value(const std::string& name) const {

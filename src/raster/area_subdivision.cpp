@@ -94,7 +94,8 @@ class Subdivision {
       if (relation == kDisjoint) continue;
       present.push_back(polygon);
       if (relation == kSurrounding &&
-          (frontSurrounder < 0 || farthestIn(polygon, low, high) > farthestIn(frontSurrounder, low, high)))
+          (frontSurrounder < 0 ||
+           farthestIn(polygon, low, high) > farthestIn(frontSurrounder, low, high)))
         frontSurrounder = polygon;
     }
     chargeToPixels(window, static_cast<float>(candidates.size()));
@@ -103,7 +104,8 @@ class Subdivision {
       ++counters.emptyWindows;
     } else if (present.size() == 1) {
       ++counters.singlePolygonWindows;
-      coverages_[present[0]].forEachPixel(window, [&](int x, int y) { draw(x, y, present[0], counters); });
+      coverages_[present[0]].forEachPixel(window,
+                                          [&](int x, int y) { draw(x, y, present[0], counters); });
     } else if (frontSurrounder >= 0 && isInFrontOfAll(frontSurrounder, present, low, high)) {
       ++counters.surrounderInFrontWindows;
       for (int y = window.y0; y < window.y1; ++y)
@@ -229,7 +231,8 @@ void AreaSubdivisionRenderer::resolveVisibility(const ScreenGeometry& screen,
                         top);
   std::vector<SubdivisionCounters> counters(pending.size());
   std::vector<Tile> tasks;
-  for (std::size_t i = 0; i < pending.size(); ++i) tasks.push_back({static_cast<int>(i), 0, 0, 0, 0});
+  for (std::size_t i = 0; i < pending.size(); ++i)
+    tasks.push_back({static_cast<int>(i), 0, 0, 0, 0});
   renderTiles(tasks, settings.threads, observer, [&](const Tile& task) {
     std::vector<PendingWindow> none;
     const PendingWindow& window = pending[task.index];

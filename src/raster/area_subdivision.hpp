@@ -22,10 +22,10 @@
 // Only the polygons not disjoint from a window are handed to its quadrants.
 //
 // Depths are inverse depths w = 1 / n, affine across a polygon's image, so
-// their extremes over a window lie at its corners. The first levels of
-// quadrants are handed to threads. Cost of a pixel: the classifications made
-// for the windows that hold it, each window's shared among its pixels, plus
-// the depth tests made at the pixel.
+// their extremes over a window lie at its corners. The windows three levels
+// down are shared among threads, each subdividing its own. Cost of a pixel:
+// the classifications made for the windows that hold it, each window's shared
+// among its pixels, plus the depth tests made at the pixel.
 #pragma once
 
 #include "raster/visible_surface_renderer.hpp"
@@ -45,8 +45,7 @@ class AreaSubdivisionRenderer final : public VisibleSurfaceRenderer {
 
  protected:
   void resolveVisibility(const ScreenGeometry& screen, const RenderSettings& settings,
-                         RenderObserver& observer, RasterFrame& frame,
-                         Stats& stats) const override;
+                         RenderObserver& observer, RasterFrame& frame, Stats& stats) const override;
 };
 
 }  // namespace rise

@@ -10,7 +10,8 @@ namespace {
 using namespace raster_testing;
 
 TEST(AreaSubdivision, DrawsAnEmptyScreenAsOneWindow) {
-  const RenderResult result = render("area-subdivision", sceneSeenFrom(Vec3(0.0f, 0.0f, -5.0f), 40, 30));
+  const RenderResult result =
+      render("area-subdivision", sceneSeenFrom(Vec3(0.0f, 0.0f, -5.0f), 40, 30));
   EXPECT_EQ(result.stats.value("windows"), 1.0);
   EXPECT_EQ(result.stats.value("windows_empty"), 1.0);
   EXPECT_EQ(result.stats.value("subdivisions"), 0.0);
@@ -31,7 +32,8 @@ TEST(AreaSubdivision, DrawsALonePolygonWithoutSubdividing) {
 // simple as it is.
 TEST(AreaSubdivision, FillsAWindowWithASurroundingPolygonInFront) {
   Scene scene = sceneSeenFrom(Vec3(0.0f, 0.0f, -5.0f), 40, 30);
-  addTriangle(scene, Vec3(-20.0f, -20.0f, -1.0f), Vec3(20.0f, -20.0f, -1.0f), Vec3(0.0f, 20.0f, -1.0f));
+  addTriangle(scene, Vec3(-20.0f, -20.0f, -1.0f), Vec3(20.0f, -20.0f, -1.0f),
+              Vec3(0.0f, 20.0f, -1.0f));
   addTriangle(scene, Vec3(-1.0f, -1.0f, 0.0f), Vec3(1.0f, -1.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f));
   const RenderResult result = render("area-subdivision", scene);
   EXPECT_EQ(result.stats.value("windows"), 1.0);
@@ -45,7 +47,8 @@ TEST(AreaSubdivision, FillsAWindowWithASurroundingPolygonInFront) {
 // pixels, add up to the cost buffer's total.
 TEST(AreaSubdivision, DividesWindowsDownToPixelsAlongEdges) {
   Scene scene = sceneSeenFrom(Vec3(0.0f, 0.0f, -5.0f), 40, 30);
-  addTriangle(scene, Vec3(-20.0f, -20.0f, 1.0f), Vec3(20.0f, -20.0f, 1.0f), Vec3(0.0f, 20.0f, 1.0f));
+  addTriangle(scene, Vec3(-20.0f, -20.0f, 1.0f), Vec3(20.0f, -20.0f, 1.0f),
+              Vec3(0.0f, 20.0f, 1.0f));
   addTriangle(scene, Vec3(-1.0f, -1.0f, 0.0f), Vec3(1.0f, -1.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f));
   const RenderResult result = render("area-subdivision", scene);
   EXPECT_GT(result.stats.value("subdivisions"), 10.0);

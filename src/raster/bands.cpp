@@ -10,7 +10,8 @@ namespace rise {
 std::vector<Tile> makeBands(int width, int height) {
   std::vector<Tile> bands;
   for (int y = 0; y < height; y += kBandHeight)
-    bands.push_back({static_cast<int>(bands.size()), 0, y, width, std::min(y + kBandHeight, height)});
+    bands.push_back(
+        {static_cast<int>(bands.size()), 0, y, width, std::min(y + kBandHeight, height)});
   return bands;
 }
 

@@ -114,7 +114,8 @@ class WaitingList {
   bool isSortedAt(std::size_t position) const { return head_ + position >= sortedFrom_; }
   std::size_t find(int piece) const {
     return static_cast<std::size_t>(std::find(list_.begin() + head_, list_.end(), piece) -
-                                    list_.begin()) - head_;
+                                    list_.begin()) -
+           head_;
   }
 
   void popFront() { sortedFrom_ = std::max(sortedFrom_, ++head_); }
@@ -165,9 +166,8 @@ class DepthSorter {
   std::vector<int> paintingOrder() {
     std::vector<int> sorted(pieces_.polygons.size());
     std::iota(sorted.begin(), sorted.end(), 0);
-    std::stable_sort(sorted.begin(), sorted.end(), [&](int a, int b) {
-      return extents_[a].farthest < extents_[b].farthest;
-    });
+    std::stable_sort(sorted.begin(), sorted.end(),
+                     [&](int a, int b) { return extents_[a].farthest < extents_[b].farthest; });
     WaitingList waiting(std::move(sorted), extents_);
     std::vector<int> order;
     std::vector<int> markedThisRound;
@@ -305,7 +305,9 @@ void paintBand(const ScreenGeometry& pieces, const Tile& band, std::span<const i
                RasterFrame& frame, std::uint64_t& pixelsWritten) {
   const PixelRect bandPixels{band.x0, band.y0, band.x1, band.y1};
   std::vector<int> faces(static_cast<std::size_t>(band.x1 - band.x0) * (band.y1 - band.y0), -1);
-  const auto at = [&](int x, int y) -> int& { return faces[(y - band.y0) * (band.x1 - band.x0) + x - band.x0]; };
+  const auto at = [&](int x, int y) -> int& {
+    return faces[(y - band.y0) * (band.x1 - band.x0) + x - band.x0];
+  };
   PolygonCoverage coverage;
   for (int piece : order) {
     const ScreenPolygon& polygon = pieces.polygons[piece];
@@ -324,9 +326,8 @@ void paintBand(const ScreenGeometry& pieces, const Tile& band, std::span<const i
 }  // namespace
 
 void DepthSortRenderer::resolveVisibility(const ScreenGeometry& screen,
-                                          const RenderSettings& settings,
-                                          RenderObserver& observer, RasterFrame& frame,
-                                          Stats& stats) const {
+                                          const RenderSettings& settings, RenderObserver& observer,
+                                          RasterFrame& frame, Stats& stats) const {
   DepthSorter sorter(screen);
   const std::vector<int> order = sorter.paintingOrder();
   const std::vector<Tile> bands = makeBands(frame.width(), frame.height());
@@ -334,14 +335,13 @@ void DepthSortRenderer::resolveVisibility(const ScreenGeometry& screen,
       polygonsByBand(sorter.pieces(), order, frame.height());
   std::vector<std::uint64_t> bandPixelsWritten(bands.size(), 0);
   renderTiles(bands, settings.threads, observer, [&](const Tile& band) {
-    paintBand(sorter.pieces(), band, bandPieces[band.index], frame,
-              bandPixelsWritten[band.index]);
+    paintBand(sorter.pieces(), band, bandPieces[band.index], frame, bandPixelsWritten[band.index]);
   });
 
   const DepthSortCounters& counters = sorter.counters();
-  stats.add("pixels_written", static_cast<double>(std::accumulate(
-                                  bandPixelsWritten.begin(), bandPixelsWritten.end(),
-                                  std::uint64_t{0})));
+  stats.add("pixels_written",
+            static_cast<double>(std::accumulate(bandPixelsWritten.begin(), bandPixelsWritten.end(),
+                                                std::uint64_t{0})));
   stats.add("comparisons", static_cast<double>(counters.comparisons));
   for (int test = 0; test < kTestCount; ++test)
     stats.add(std::string("settled_by_") + kTestNames[test],

@@ -35,7 +35,8 @@ class DepthSortRenderer final : public VisibleSurfaceRenderer {
  public:
   std::string_view name() const override { return "depth-sort"; }
   std::string_view summary() const override {
-    return "Newell, Newell and Sancha's depth sort: paint back to front, split what cannot be sorted";
+    return "Newell, Newell and Sancha's depth sort: paint back to front, split what cannot be "
+           "sorted";
   }
   std::string_view citation() const override {
     return "M. E. Newell, R. G. Newell, T. L. Sancha, A solution to the hidden surface problem, "
@@ -44,8 +45,7 @@ class DepthSortRenderer final : public VisibleSurfaceRenderer {
 
  protected:
   void resolveVisibility(const ScreenGeometry& screen, const RenderSettings& settings,
-                         RenderObserver& observer, RasterFrame& frame,
-                         Stats& stats) const override;
+                         RenderObserver& observer, RasterFrame& frame, Stats& stats) const override;
 };
 
 }  // namespace rise

@@ -20,7 +20,8 @@ void splitPolygon(std::span<const Vec3> polygon, const glm::vec4& plane, float t
     const Vec3& below = crossesDown ? to : from;
     const float aboveDistance = crossesDown ? fromDistance : toDistance;
     const float belowDistance = crossesDown ? toDistance : fromDistance;
-    const Vec3 crossing = above + (aboveDistance / (aboveDistance - belowDistance)) * (below - above);
+    const Vec3 crossing =
+        above + (aboveDistance / (aboveDistance - belowDistance)) * (below - above);
     positive.push_back(crossing);
     negative.push_back(crossing);
   }

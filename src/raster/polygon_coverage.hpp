@@ -59,8 +59,7 @@ class PolygonCoverage {
     const PixelRect scanned = bounds_.intersection(area);
     for (int y = scanned.y0; y < scanned.y1; ++y)
       for (int x = scanned.x0; x < scanned.x1; ++x)
-        if (covers(Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f)))
-          visit(x, y);
+        if (covers(Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f))) visit(x, y);
   }
 
  private:

@@ -53,7 +53,7 @@ TEST(PolygonCoverage, GivesAnEdgesPixelsToOneSideOnly) {
 TEST(PolygonCoverage, OwnsTopAndLeftEdgesOnly) {
   // The pixel square of centres (1.5..3.5) x (1.5..3.5), corners on centres.
   const PolygonCoverage square(std::vector{Vec3(1.5f, 1.5f, 1.0f), Vec3(3.5f, 1.5f, 1.0f),
-                                Vec3(3.5f, 3.5f, 1.0f), Vec3(1.5f, 3.5f, 1.0f)});
+                                           Vec3(3.5f, 3.5f, 1.0f), Vec3(1.5f, 3.5f, 1.0f)});
   EXPECT_TRUE(square.covers(Vec2(1.5f, 2.5f)));   // left edge
   EXPECT_TRUE(square.covers(Vec2(2.5f, 1.5f)));   // top edge
   EXPECT_FALSE(square.covers(Vec2(3.5f, 2.5f)));  // right edge
@@ -62,15 +62,15 @@ TEST(PolygonCoverage, OwnsTopAndLeftEdgesOnly) {
 }
 
 TEST(PolygonCoverage, CoversNothingWithoutArea) {
-  const PolygonCoverage line(std::vector{Vec3(0.5f, 0.5f, 1.0f), Vec3(5.5f, 5.5f, 1.0f),
-                              Vec3(3.5f, 3.5f, 1.0f)});
+  const PolygonCoverage line(
+      std::vector{Vec3(0.5f, 0.5f, 1.0f), Vec3(5.5f, 5.5f, 1.0f), Vec3(3.5f, 3.5f, 1.0f)});
   EXPECT_TRUE(line.isEmpty());
   EXPECT_FALSE(line.covers(Vec2(3.5f, 3.5f)));
 }
 
 TEST(PolygonCoverage, TellsWindowsHeldFromWindowsApart) {
-  const PolygonCoverage triangle(std::vector{Vec3(0.0f, 0.0f, 1.0f), Vec3(10.0f, 0.0f, 1.0f),
-                                  Vec3(0.0f, 10.0f, 1.0f)});
+  const PolygonCoverage triangle(
+      std::vector{Vec3(0.0f, 0.0f, 1.0f), Vec3(10.0f, 0.0f, 1.0f), Vec3(0.0f, 10.0f, 1.0f)});
   EXPECT_TRUE(triangle.holds(Vec2(1.0f), Vec2(4.0f)));
   EXPECT_FALSE(triangle.holds(Vec2(4.0f), Vec2(7.0f)));  // crosses the long edge
   EXPECT_FALSE(triangle.edgeSeparates(Vec2(4.0f), Vec2(7.0f)));

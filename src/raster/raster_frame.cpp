@@ -1,15 +1,26 @@
 #include "raster/raster_frame.hpp"
 
+#include <array>
+
+#include "raster/parallel_ranges.hpp"
+
 namespace rise {
 
 RasterFrame::RasterFrame(int width, int height, const Color& background,
-                         const ScreenGeometry& screen, const SurfaceShader& shader)
+                         const ScreenGeometry& screen, const SurfaceShader& shader, int threads)
     : screen_(screen), shader_(shader) {
-  result_.image = Image(width, height, background);
-  depth_ = &(result_.buffers["depth"] = Image(width, height, Color(kInfinity)));
-  normal_ = &(result_.buffers["normal"] = Image(width, height));
-  face_ = &(result_.buffers["face"] = Image(width, height, Color(-1.0f)));
-  cost_ = &(result_.buffers["cost"] = Image(width, height));
+  // Filling five image-sized buffers is a fair share of a frame of a large
+  // image: the render's threads share it.
+  const std::array<Color, 5> fills = {background, Color(kInfinity), Color(0.0f), Color(-1.0f),
+                                      Color(0.0f)};
+  std::array<Image, 5> images;
+  forEachRange(static_cast<int>(images.size()), 1, threads,
+               [&](int image, int, int) { images[image] = Image(width, height, fills[image]); });
+  result_.image = std::move(images[0]);
+  depth_ = &(result_.buffers["depth"] = std::move(images[1]));
+  normal_ = &(result_.buffers["normal"] = std::move(images[2]));
+  face_ = &(result_.buffers["face"] = std::move(images[3]));
+  cost_ = &(result_.buffers["cost"] = std::move(images[4]));
 }
 
 void RasterFrame::setVisible(int x, int y, int face) {

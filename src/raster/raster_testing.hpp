@@ -24,7 +24,9 @@ inline constexpr std::array<std::string_view, 4> kAlgorithms = {"depth-sort", "a
 // material has one colour.
 inline Scene sceneSeenFrom(const Vec3& eye, int width, int height) {
   Scene scene;
-  scene.image = {width, height, Color(0.1f, 0.2f, 0.3f)};
+  scene.image.width = width;
+  scene.image.height = height;
+  scene.image.background = Color(0.1f, 0.2f, 0.3f);
   scene.camera.position = eye;
   scene.camera.lookAt = Vec3(0.0f);
   scene.camera.fovDegrees = 40.0f;
@@ -93,8 +95,7 @@ inline PrimaryHit primaryHit(const Scene& scene, const ViewFrame& view, int x, i
 // The pixels at which a raster render sees another shape than the primary
 // ray does, or sees it at another distance (relative tolerance).
 inline int pixelsDisagreeingWithRays(const Scene& scene, const RenderSettings& settings,
-                                     const RenderResult& result,
-                                     float distanceTolerance = 1e-3f) {
+                                     const RenderResult& result, float distanceTolerance = 1e-3f) {
   const TessellatedScene tessellated = tessellateForRaster(scene, settings);
   const ViewFrame view(scene.camera, settings.width, settings.height);
   int disagreeing = 0;

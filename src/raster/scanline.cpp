@@ -84,7 +84,8 @@ class BandSweep {
                });
     activeEdges_.swap(merged_);
     counters_.activeEdgeVisits += activeEdges_.size();
-    counters_.activeEdgesMax = std::max<std::uint64_t>(counters_.activeEdgesMax, activeEdges_.size());
+    counters_.activeEdgesMax =
+        std::max<std::uint64_t>(counters_.activeEdgesMax, activeEdges_.size());
   }
 
   void drawSpans(int y) {
@@ -143,9 +144,8 @@ class BandSweep {
 }  // namespace
 
 void ScanlineRenderer::resolveVisibility(const ScreenGeometry& screen,
-                                         const RenderSettings& settings,
-                                         RenderObserver& observer, RasterFrame& frame,
-                                         Stats& stats) const {
+                                         const RenderSettings& settings, RenderObserver& observer,
+                                         RasterFrame& frame, Stats& stats) const {
   const std::vector<Tile> bands = makeBands(frame.width(), frame.height());
   const std::vector<std::vector<int>> bandPolygons =
       polygonsByBand(screen, inMadeOrder(screen), frame.height());

@@ -50,8 +50,7 @@ class ScanlineRenderer final : public VisibleSurfaceRenderer {
 
  protected:
   void resolveVisibility(const ScreenGeometry& screen, const RenderSettings& settings,
-                         RenderObserver& observer, RasterFrame& frame,
-                         Stats& stats) const override;
+                         RenderObserver& observer, RasterFrame& frame, Stats& stats) const override;
 };
 
 }  // namespace rise

@@ -31,20 +31,20 @@ RasterAffine relativeTo(const glm::dvec3& form, const Vec2& origin) {
 // (camera coordinates) where d = sum mu_i c_i with sum mu_i = 1 / n: mu =
 // M^-1 d, with M the matrix of columns c_i, and the barycentric coordinates
 // there are mu / sum mu. Each mu_i is linear in d, hence affine in raster
-// position. Computed in double precision: for a small, distant face M is
-// nearly singular.
+// position. The rows of M^-1 are c1 x c2, c2 x c0 and c0 x c1 over the
+// determinant c0 . (c1 x c2). Computed in double precision: for a small,
+// distant face M is nearly singular.
 ScreenFace setUpFace(const ViewProjection& view, int sceneFace, bool frontFacing,
                      const std::array<Vec3, 3>& camera, const Vec2& origin) {
-  const glm::dmat3 cornerColumns{glm::dvec3(camera[0]), glm::dvec3(camera[1]),
-                                 glm::dvec3(camera[2])};
-  const glm::dmat3 weightsOfDirection = glm::inverse(cornerColumns);
+  const std::array<glm::dvec3, 3> c{glm::dvec3(camera[0]), glm::dvec3(camera[1]),
+                                    glm::dvec3(camera[2])};
+  const glm::dvec3 firstRow = glm::cross(c[1], c[2]);
+  const double determinant = glm::dot(c[0], firstRow);
+  const std::array<glm::dvec3, 3> rows{firstRow, glm::cross(c[2], c[0]), glm::cross(c[0], c[1])};
   ScreenFace face{sceneFace, frontFacing, origin, {}, {}};
   glm::dvec3 sum(0.0);
   for (int i = 0; i < 3; ++i) {
-    // glm indexes matrices [column][row]: this is row i.
-    const glm::dvec3 row(weightsOfDirection[0][i], weightsOfDirection[1][i],
-                         weightsOfDirection[2][i]);
-    const glm::dvec3 form = view.rasterForm(row);
+    const glm::dvec3 form = view.rasterForm(rows[i] / determinant);
     face.weights[i] = relativeTo(form, origin);
     sum += form;
   }
@@ -81,12 +81,11 @@ class FaceProjector {
       const ViewedVertex& b = viewed_[face.vertices[1]];
       const ViewedVertex& c = viewed_[face.vertices[2]];
       const std::array<Vec3, 3> camera{a.camera, b.camera, c.camera};
-      // The report's test, (P - Obs) . N, in the world: camera coordinates
-      // (right, up, forward) are left-handed, and mirror the winding.
-      const Vec3& p0 = scene_.vertices[face.vertices[0]].position;
-      const Vec3& p1 = scene_.vertices[face.vertices[1]].position;
-      const Vec3& p2 = scene_.vertices[face.vertices[2]].position;
-      const float awayFromEye = glm::dot(p0 - view_.eye(), glm::cross(p1 - p0, p2 - p0));
+      // The report's test, (P - Obs) . N, with Obs at the origin. Camera
+      // coordinates (right, up, forward) are left-handed: they mirror the
+      // winding, and so the normal, hence the minus.
+      const float awayFromEye =
+          -glm::dot(camera[0], glm::cross(camera[1] - camera[0], camera[2] - camera[0]));
       if (awayFromEye == 0.0f || (backfaceCulling_ && face.cullable && awayFromEye > 0.0f)) {
         ++out.counters.culled;
         continue;
@@ -157,8 +156,8 @@ glm::vec4 ScreenFace::plane() const {
 }
 
 int ScreenGeometry::addPolygon(int face, std::span<const Vec3> polygonCorners) {
-  polygons.push_back({face, static_cast<int>(corners.size()),
-                      static_cast<int>(polygonCorners.size())});
+  polygons.push_back(
+      {face, static_cast<int>(corners.size()), static_cast<int>(polygonCorners.size())});
   corners.insert(corners.end(), polygonCorners.begin(), polygonCorners.end());
   return static_cast<int>(polygons.size()) - 1;
 }
@@ -176,6 +175,14 @@ ScreenGeometry projectScene(const TessellatedScene& scene, const ViewProjection&
     projector.projectFaces(begin, end, parts[range]);
   });
   ScreenGeometry screen;
+  std::size_t faces = 0, corners = 0;
+  for (const ScreenGeometry& part : parts) {
+    faces += part.faces.size();
+    corners += part.corners.size();
+  }
+  screen.faces.reserve(faces);
+  screen.polygons.reserve(faces);
+  screen.corners.reserve(corners);
   for (const ScreenGeometry& part : parts) append(screen, part);
   return screen;
 }

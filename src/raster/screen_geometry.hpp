@@ -48,9 +48,9 @@ struct RasterAffine {
 
 // A scene face seen from the eye.
 struct ScreenFace {
-  int sceneFace;      // into TessellatedScene::faces: the face number of the "face" buffer
-  bool frontFacing;   // the eye sees the side its corners wind counter-clockwise around
-  Vec2 origin;        // the raster point the affine functions are relative to
+  int sceneFace;     // into TessellatedScene::faces: the face number of the "face" buffer
+  bool frontFacing;  // the eye sees the side its corners wind counter-clockwise around
+  Vec2 origin;       // the raster point the affine functions are relative to
   std::array<RasterAffine, 3> weights;  // vertex i's barycentric weight divided by n
   RasterAffine inverseDepth;            // their sum: w = 1 / n on the face's plane
 

@@ -20,7 +20,10 @@ Vec3 towardsEye(const Vec3& normal, int side) { return side == kFront ? normal :
 SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessellated,
                              const ScreenGeometry& screen, const ViewProjection& view,
                              Shading shading, int threads)
-    : scene_(scene), tessellated_(tessellated), screen_(screen), eye_(view.eye()),
+    : scene_(scene),
+      tessellated_(tessellated),
+      screen_(screen),
+      eye_(view.eye()),
       shading_(shading) {
   if (shading_ == Shading::Flat) lightFaces(threads);
   if (shading_ == Shading::Gouraud) lightVertices(threads);
@@ -53,9 +56,8 @@ void SurfaceShader::lightFaces(int threads) {
                    const Vec3& b = tessellated_.vertices[face.vertices[1]].position;
                    const Vec3& c = tessellated_.vertices[face.vertices[2]].position;
                    const Vec3 normal = glm::normalize(glm::cross(b - a, c - a));
-                   faceLight_[f] =
-                       illumination(scene_.materials[face.material], (a + b + c) / 3.0f,
-                                    towardsEye(normal, sideSeen(screen_.faces[f])));
+                   faceLight_[f] = illumination(scene_.materials[face.material], (a + b + c) / 3.0f,
+                                                towardsEye(normal, sideSeen(screen_.faces[f])));
                  }
                });
 }
@@ -74,16 +76,15 @@ void SurfaceShader::lightVertices(int threads) {
   for (int side : {kFront, kBack}) {
     if (material[side].empty()) continue;
     vertexLight_[side].resize(vertexCount);
-    forEachRange(static_cast<int>(vertexCount), kItemsPerRange, threads,
-                 [&](int, int begin, int end) {
-                   for (int v = begin; v < end; ++v) {
-                     if (material[side][v] < 0) continue;
-                     const SurfaceVertex& vertex = tessellated_.vertices[v];
-                     vertexLight_[side][v] =
-                         illumination(scene_.materials[material[side][v]], vertex.position,
-                                      towardsEye(vertex.normal, side));
-                   }
-                 });
+    forEachRange(
+        static_cast<int>(vertexCount), kItemsPerRange, threads, [&](int, int begin, int end) {
+          for (int v = begin; v < end; ++v) {
+            if (material[side][v] < 0) continue;
+            const SurfaceVertex& vertex = tessellated_.vertices[v];
+            vertexLight_[side][v] = illumination(scene_.materials[material[side][v]],
+                                                 vertex.position, towardsEye(vertex.normal, side));
+          }
+        });
   }
 }
 
@@ -94,10 +95,10 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
   const SurfaceVertex& a = tessellated_.vertices[sceneFace.vertices[0]];
   const SurfaceVertex& b = tessellated_.vertices[sceneFace.vertices[1]];
   const SurfaceVertex& c = tessellated_.vertices[sceneFace.vertices[2]];
-  SurfacePoint surface;
-  surface.position = weights.x * a.position + weights.y * b.position + weights.z * c.position;
-  surface.normal = glm::normalize(weights.x * a.normal + weights.y * b.normal + weights.z * c.normal);
-  surface.uv = weights.x * a.uv + weights.y * b.uv + weights.z * c.uv;
+  const SurfacePoint surface(
+      weights.x * a.position + weights.y * b.position + weights.z * c.position,
+      glm::normalize(weights.x * a.normal + weights.y * b.normal + weights.z * c.normal),
+      weights.x * a.uv + weights.y * b.uv + weights.z * c.uv);
 
   const Material& material = scene_.materials[sceneFace.material];
   const Color surfaceColor = material.colorAt(surface);
@@ -117,7 +118,8 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
       break;
     }
     case Shading::Phong:
-      color = illuminate(material, surfaceColor, surface.position, towardsEye(surface.normal, side));
+      color =
+          illuminate(material, surfaceColor, surface.position, towardsEye(surface.normal, side));
       break;
   }
   return {color, glm::length(surface.position - eye_), surface.normal};

@@ -67,7 +67,8 @@ float brightest(const Image& image) {
 TEST(SurfaceShader, PhongKeepsTheHighlightGouraudMisses) {
   const Scene scene = coarseSphereWithAHighlightInAFace();
   const Material material = shiny();
-  const float peak = 0.5f * material.ka * material.color.r + material.kd * material.color.r + material.ks;
+  const float peak =
+      0.5f * material.ka * material.color.r + material.kd * material.color.r + material.ks;
   const float phong = brightest(renderShaded(scene, Shading::Phong, 2).image);
   const float gouraud = brightest(renderShaded(scene, Shading::Gouraud, 2).image);
   EXPECT_NEAR(phong, peak, 0.03f * peak);
@@ -99,10 +100,10 @@ TEST(SurfaceShader, PhongOnAPolygonIsTheRayTracersModel) {
   scene.materials[0].n = 5.0f;
   scene.ambient = Color(0.2f);
   scene.lights.push_back(std::make_unique<PointLight>(Vec3(-1.0f, 2.0f, -2.0f), Color(0.9f)));
-  scene.shapes.push_back(std::make_unique<ConvexPolygon>(
-      std::vector{Vec3(-2.0f, -1.5f, 0.5f), Vec3(2.0f, -1.5f, 0.0f), Vec3(2.0f, 1.5f, 0.0f),
-                  Vec3(-2.0f, 1.5f, 0.5f)},
-      0));
+  scene.shapes.push_back(
+      std::make_unique<ConvexPolygon>(std::vector{Vec3(-2.0f, -1.5f, 0.5f), Vec3(2.0f, -1.5f, 0.0f),
+                                                  Vec3(2.0f, 1.5f, 0.0f), Vec3(-2.0f, 1.5f, 0.5f)},
+                                      0));
   const RenderResult raster = renderShaded(scene, Shading::Phong);
   const RenderResult traced = render("ray-tracing", scene);
   int compared = 0;

@@ -22,6 +22,7 @@ TessellatedScene tessellateScene(const Scene& scene, const TessellationSettings&
     const int firstVertex = static_cast<int>(tessellated.vertices.size());
     tessellated.vertices.insert(tessellated.vertices.end(), part.vertices.begin(),
                                 part.vertices.end());
+    tessellated.faces.reserve(tessellated.faces.size() + part.triangles.size());
     for (const auto& [a, b, c] : part.triangles)
       tessellated.faces.push_back({{firstVertex + a, firstVertex + b, firstVertex + c},
                                    static_cast<int>(shape),

@@ -9,8 +9,9 @@
 //
 // The statistics count the polygons at each step (in, culled, outside the
 // view, clipped, drawn), then what the algorithm did; "pixels_written" counts
-// every time a pixel's face was set, and "overdraw" divides it by the pixels
-// some face is seen at. The "cost" buffer holds, at each pixel, the work the
+// every time a pixel's face was set, and "overdraw" divides it by
+// "covered_pixels", the pixels some face is seen at. With several samples a
+// pixel, every pass is counted. The "cost" buffer holds, at each pixel, the work the
 // algorithm spent on it, in the units its description gives.
 #pragma once
 

@@ -1,6 +1,8 @@
 #include "raster/z_buffer.hpp"
 
+#include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "raster/bands.hpp"
@@ -14,23 +16,34 @@ struct ZBufferCounters {
   std::uint64_t pixelsWritten = 0;
 };
 
-// The depth and face buffers, the size of the image.
+// The depth and face buffers, the size of the image. Each band clears its
+// own rows before drawing, on its thread.
 struct ZBuffer {
   ZBuffer(int width, int height)
       : width(width),
-        inverseDepth(static_cast<std::size_t>(width) * height, 0.0f),
-        face(static_cast<std::size_t>(width) * height, -1) {}
+        pixels(static_cast<std::size_t>(width) * height),
+        inverseDepth(new float[pixels]),
+        face(new int[pixels]) {}
 
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
 
+  void clear(const Tile& band) {
+    const std::size_t first = index(band.x0, band.y0);
+    const std::size_t end = index(band.x0, band.y1);
+    std::fill(inverseDepth.get() + first, inverseDepth.get() + end, 0.0f);
+    std::fill(face.get() + first, face.get() + end, -1);
+  }
+
   int width;
-  std::vector<float> inverseDepth;  // 0: infinitely far
-  std::vector<int> face;            // -1: none
+  std::size_t pixels;
+  std::unique_ptr<float[]> inverseDepth;  // 0: infinitely far
+  std::unique_ptr<int[]> face;            // -1: none
 };
 
 void drawBand(const ScreenGeometry& screen, const Tile& band, std::span<const int> polygons,
               ZBuffer& buffer, RasterFrame& frame, ZBufferCounters& counters) {
   const PixelRect bandPixels{band.x0, band.y0, band.x1, band.y1};
+  buffer.clear(band);
   PolygonCoverage coverage;
   for (int index : polygons) {
     const ScreenPolygon& polygon = screen.polygons[index];
@@ -74,8 +87,7 @@ void ZBufferRenderer::resolveVisibility(const ScreenGeometry& screen,
   }
   stats.add("depth_tests", static_cast<double>(total.depthTests));
   stats.add("pixels_written", static_cast<double>(total.pixelsWritten));
-  stats.add("z_buffer_bytes",
-            static_cast<double>(buffer.inverseDepth.size() * (sizeof(float) + sizeof(int))));
+  stats.add("z_buffer_bytes", static_cast<double>(buffer.pixels * (sizeof(float) + sizeof(int))));
 }
 
 }  // namespace rise

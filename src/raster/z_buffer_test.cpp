@@ -51,7 +51,8 @@ TEST(ZBuffer, KeepsTheNearerSurfaceInEitherOrder) {
   for (bool nearerFirst : {true, false}) {
     Scene scene = sceneSeenFrom(Vec3(0.0f, 0.0f, -5.0f), 40, 30);
     const auto addNear = [&] {
-      addTriangle(scene, Vec3(-1.0f, -1.0f, -1.0f), Vec3(1.0f, -1.0f, -1.0f), Vec3(0.0f, 1.0f, -1.0f));
+      addTriangle(scene, Vec3(-1.0f, -1.0f, -1.0f), Vec3(1.0f, -1.0f, -1.0f),
+                  Vec3(0.0f, 1.0f, -1.0f));
     };
     const auto addFar = [&] {
       addTriangle(scene, Vec3(-2.0f, 1.0f, 1.0f), Vec3(2.0f, 1.0f, 1.0f), Vec3(0.0f, -2.0f, 1.0f));

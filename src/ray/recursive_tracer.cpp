@@ -13,7 +13,7 @@ struct ShadingFrame {
   Vec3 normal;         // the geometric normal, unit, on the ray's side of the surface
   Vec3 shadingNormal;  // the smooth normal for shading, on the same side
   Vec3 toViewer;       // unit, back along the ray
-  float time;     // the ray's instant, which the rays it spawns keep
+  float time;          // the ray's instant, which the rays it spawns keep
   bool entering;
 };
 

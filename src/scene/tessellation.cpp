@@ -30,7 +30,8 @@ void Tessellation::addConvexPolygon(std::span<const int> corners) {
 void tessellatePlaced(const Shape& shape, const Mat4& worldFromObject,
                       const TessellationSettings& settings, Tessellation& out) {
   TessellationSettings objectSettings = settings;
-  objectSettings.viewpoint = Vec3(glm::inverse(worldFromObject) * glm::vec4(settings.viewpoint, 1.0f));
+  objectSettings.viewpoint =
+      Vec3(glm::inverse(worldFromObject) * glm::vec4(settings.viewpoint, 1.0f));
   shape.tessellate(objectSettings, out);
   const Mat3 normalToWorld = glm::transpose(glm::inverse(Mat3(worldFromObject)));
   for (SurfaceVertex& vertex : out.vertices) {
@@ -45,17 +46,17 @@ namespace {
 
 // The same number for every vertex at one place: meshes often repeat a corner
 // once for each of its texture coordinates.
-std::vector<std::uint64_t> weldedIndices(std::span<const Vec3> positions) {
-  const auto lexicographic = [&](int a, int b) {
+std::vector<std::uint32_t> weldedIndices(std::span<const Vec3> positions) {
+  const auto lexicographic = [&](std::uint32_t a, std::uint32_t b) {
     const Vec3& p = positions[a];
     const Vec3& q = positions[b];
     return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
   };
-  std::vector<int> order(positions.size());
-  std::iota(order.begin(), order.end(), 0);
+  std::vector<std::uint32_t> order(positions.size());
+  std::iota(order.begin(), order.end(), 0u);
   std::sort(order.begin(), order.end(), lexicographic);
-  std::vector<std::uint64_t> welded(positions.size());
-  std::uint64_t place = 0;
+  std::vector<std::uint32_t> welded(positions.size());
+  std::uint32_t place = 0;
   for (std::size_t i = 0; i < order.size(); ++i) {
     if (i > 0 && lexicographic(order[i - 1], order[i])) ++place;
     welded[order[i]] = place;
@@ -63,23 +64,44 @@ std::vector<std::uint64_t> weldedIndices(std::span<const Vec3> positions) {
   return welded;
 }
 
+// Whether each directed edge a -> b between the vertices `vertexOf` maps the
+// corners to occurs once, and its reverse b -> a once too. The edges leaving
+// each vertex are gathered in one array (counting sort), so that the reverse
+// of an edge is looked for among the few edges leaving its end.
+bool edgesPairUp(std::span<const std::array<int, 3>> triangles,
+                 const std::vector<std::uint32_t>& vertexOf) {
+  std::vector<std::uint32_t> firstEdge(vertexOf.size() + 1, 0);
+  for (const auto& triangle : triangles)
+    for (int corner : triangle) ++firstEdge[vertexOf[corner] + 1];
+  std::partial_sum(firstEdge.begin(), firstEdge.end(), firstEdge.begin());
+  std::vector<std::uint32_t> edgeEnd(firstEdge.back());
+  std::vector<std::uint32_t> filled(firstEdge.begin(), firstEdge.end() - 1);
+  for (const auto& triangle : triangles)
+    for (int corner = 0; corner < 3; ++corner)
+      edgeEnd[filled[vertexOf[triangle[corner]]]++] = vertexOf[triangle[(corner + 1) % 3]];
+
+  const auto leaving = [&](std::uint32_t vertex) {
+    return std::span<const std::uint32_t>(edgeEnd.data() + firstEdge[vertex],
+                                          firstEdge[vertex + 1] - firstEdge[vertex]);
+  };
+  for (std::uint32_t from = 0; from + 1 < firstEdge.size(); ++from) {
+    const std::span<const std::uint32_t> ends = leaving(from);
+    for (std::size_t i = 0; i < ends.size(); ++i) {
+      if (std::count(ends.begin(), ends.end(), ends[i]) != 1) return false;
+      const std::span<const std::uint32_t> back = leaving(ends[i]);
+      if (std::count(back.begin(), back.end(), from) != 1) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 bool enclosesSolid(std::span<const Vec3> positions, std::span<const std::array<int, 3>> triangles) {
   if (triangles.empty()) return false;
-  const std::vector<std::uint64_t> welded = weldedIndices(positions);
-  const auto edgeKey = [](std::uint64_t from, std::uint64_t to) { return from << 32 | to; };
-  std::vector<std::uint64_t> edges;
-  edges.reserve(3 * triangles.size());
-  for (const auto& triangle : triangles)
-    for (int corner = 0; corner < 3; ++corner)
-      edges.push_back(edgeKey(welded[triangle[corner]], welded[triangle[(corner + 1) % 3]]));
-  std::sort(edges.begin(), edges.end());
-  // Each directed edge once, and its reverse there too.
-  if (std::adjacent_find(edges.begin(), edges.end()) != edges.end()) return false;
-  return std::all_of(edges.begin(), edges.end(), [&](std::uint64_t edge) {
-    return std::binary_search(edges.begin(), edges.end(), edgeKey(edge & 0xffffffffu, edge >> 32));
-  });
+  std::vector<std::uint32_t> itself(positions.size());
+  std::iota(itself.begin(), itself.end(), 0u);
+  return edgesPairUp(triangles, itself) || edgesPairUp(triangles, weldedIndices(positions));
 }
 
 int segmentsPerTurn(int level) { return 4 * level; }

@@ -85,7 +85,9 @@ TEST(Tessellation, PutsAConesVerticesOnItsSideAndBase) {
     const float radius = std::hypot(vertex.position.x, vertex.position.z);
     EXPECT_NEAR(radius, 1.0f - 0.5f * height, 1e-5f);
     // The side's normal leans up by atan(radius / height).
-    if (vertex.normal.y > 0.0f) EXPECT_NEAR(vertex.normal.y, 1.0f / std::sqrt(5.0f), 1e-5f);
+    if (vertex.normal.y > 0.0f) {
+      EXPECT_NEAR(vertex.normal.y, 1.0f / std::sqrt(5.0f), 1e-5f);
+    }
   }
   expectClosedSolid(cone);
 }
@@ -96,8 +98,8 @@ TEST(Tessellation, CoversABoxWithTwoTrianglesAFace) {
   for (const SurfaceVertex& vertex : box.vertices) {
     // On the face its normal names.
     const int axis = vertex.normal.x != 0.0f ? 0 : (vertex.normal.y != 0.0f ? 1 : 2);
-    const float face = vertex.normal[axis] > 0.0f ? Vec3(1.0f, 3.0f, 4.0f)[axis]
-                                                  : Vec3(-1.0f, 0.0f, 2.0f)[axis];
+    const float face =
+        vertex.normal[axis] > 0.0f ? Vec3(1.0f, 3.0f, 4.0f)[axis] : Vec3(-1.0f, 0.0f, 2.0f)[axis];
     EXPECT_EQ(vertex.position[axis], face);
   }
   expectClosedSolid(box);

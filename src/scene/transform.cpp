@@ -15,7 +15,8 @@ Mat4 worldFromObject(const TransformSpec& spec) {
 }
 
 TransformSpec interpolate(const TransformSpec& from, const TransformSpec& to, float time) {
-  return {glm::mix(from.scale, to.scale, time), glm::mix(from.rotateDegrees, to.rotateDegrees, time),
+  return {glm::mix(from.scale, to.scale, time),
+          glm::mix(from.rotateDegrees, to.rotateDegrees, time),
           glm::mix(from.translate, to.translate, time)};
 }
 

@@ -56,8 +56,7 @@ Bounds3 Plane::bounds() const { return Bounds3::infinite(); }
 // the cells near the camera, which look large, are small, and the far ones,
 // which look small, are large.
 void Plane::tessellate(const TessellationSettings& settings, Tessellation& out) const {
-  const Vec3 foot =
-      settings.viewpoint - glm::dot(settings.viewpoint - point_, normal_) * normal_;
+  const Vec3 foot = settings.viewpoint - glm::dot(settings.viewpoint - point_, normal_) * normal_;
   const int steps = settings.level;
   std::vector<float> lines;
   for (int i = -steps; i <= steps; ++i) {

@@ -76,15 +76,25 @@ bool TriangleMesh::primitiveTriangle(int triangle, std::array<Vec3, 3>& corners)
   return true;
 }
 
-// Each triangle with its own corners, all three with its flat normal, as the
-// ray tracer shades it.
+// With normals at its vertices, the mesh as it is, its triangles sharing
+// their corners; without, each triangle with corners of its own, all three
+// with its flat normal, as the ray tracer shades it.
 void TriangleMesh::tessellate(const TessellationSettings&, Tessellation& out) const {
-  for (const auto& triangle : triangles_) {
-    const Vec3 normal = windingNormal(vertices_[triangle[0]], vertices_[triangle[1]],
-                                      vertices_[triangle[2]]);
-    const int first = static_cast<int>(out.vertices.size());
-    for (int index : triangle) out.addVertex({vertices_[index], normal});
-    out.addTriangle(first, first + 1, first + 2);
+  if (!normals_.empty()) {
+    out.vertices.reserve(vertices_.size());
+    out.triangles.reserve(triangles_.size());
+    for (std::size_t i = 0; i < vertices_.size(); ++i)
+      out.addVertex({vertices_[i], normals_[i], uvs_.empty() ? Vec2(0.0f) : uvs_[i]});
+    for (const auto& [a, b, c] : triangles_) out.addTriangle(a, b, c);
+  } else {
+    for (const auto& triangle : triangles_) {
+      const Vec3 normal =
+          windingNormal(vertices_[triangle[0]], vertices_[triangle[1]], vertices_[triangle[2]]);
+      const int first = static_cast<int>(out.vertices.size());
+      for (int index : triangle)
+        out.addVertex({vertices_[index], normal, uvs_.empty() ? Vec2(0.0f) : uvs_[index]});
+      out.addTriangle(first, first + 1, first + 2);
+    }
   }
   out.enclosesSolid = enclosesSolid(vertices_, triangles_);
 }
