@@ -18,8 +18,9 @@ namespace rise::bench {
 namespace {
 
 constexpr int kImageSize = 256;  // 65,536 primary rays
-// Brute force tests every triangle for every ray: beyond this, one pass over
-// the rays takes minutes.
+// Brute force tests every triangle for every ray, and so does a bounding
+// sphere around the one mesh for every ray that meets it: beyond this many
+// triangles, one pass over the rays takes minutes.
 constexpr int kBruteForceLimit = 6000;
 
 struct TestMesh {
@@ -89,7 +90,8 @@ void registerBenchmarks() {
   for (const std::string& mesh : meshes) {
     const int triangles = mesh == "bunny" ? 69451 : 20 << (2 * std::stoi(mesh.substr(10)));
     for (Accel accel : availableAccels()) {
-      if (accel == Accel::None && triangles > kBruteForceLimit) continue;
+      const bool testsEveryTriangle = accel == Accel::None || accel == Accel::Spheres;
+      if (testsEveryTriangle && triangles > kBruteForceLimit) continue;
       benchmark::RegisterBenchmark(
           ("primary_rays/" + std::string(accelName(accel)) + "/" + mesh).c_str(),
           [accel, mesh](benchmark::State& state) { tracePrimaryRays(state, accel, mesh); })

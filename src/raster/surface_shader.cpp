@@ -1,6 +1,7 @@
 #include "raster/surface_shader.hpp"
 
 #include "raster/parallel_ranges.hpp"
+#include "scene/surface_mapping.hpp"
 #include "shading/phong.hpp"
 
 namespace rise {
@@ -88,6 +89,22 @@ void SurfaceShader::lightVertices(int threads) {
   }
 }
 
+// How far the texture coordinates move from this pixel to the next across
+// and down, by the face's perspective-correct barycentric coordinates one
+// pixel away.
+PixelFootprint SurfaceShader::uvFootprint(int face, const Vec2& centre) const {
+  const ScreenFace& screenFace = screen_.faces[face];
+  const SceneFace& sceneFace = tessellated_.faces[screenFace.sceneFace];
+  const auto uvAt = [&](const Vec2& raster) {
+    const Vec3 weights = screenFace.barycentricAt(raster);
+    return weights.x * tessellated_.vertices[sceneFace.vertices[0]].uv +
+           weights.y * tessellated_.vertices[sceneFace.vertices[1]].uv +
+           weights.z * tessellated_.vertices[sceneFace.vertices[2]].uv;
+  };
+  const Vec2 here = uvAt(centre);
+  return {uvAt(centre + Vec2(1.0f, 0.0f)) - here, uvAt(centre + Vec2(0.0f, 1.0f)) - here};
+}
+
 ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
   const ScreenFace& screenFace = screen_.faces[face];
   const SceneFace& sceneFace = tessellated_.faces[screenFace.sceneFace];
@@ -95,13 +112,13 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
   const SurfaceVertex& a = tessellated_.vertices[sceneFace.vertices[0]];
   const SurfaceVertex& b = tessellated_.vertices[sceneFace.vertices[1]];
   const SurfaceVertex& c = tessellated_.vertices[sceneFace.vertices[2]];
-  const SurfacePoint surface(
+  SurfacePoint surface(
       weights.x * a.position + weights.y * b.position + weights.z * c.position,
       glm::normalize(weights.x * a.normal + weights.y * b.normal + weights.z * c.normal),
       weights.x * a.uv + weights.y * b.uv + weights.z * c.uv);
 
   const Material& material = scene_.materials[sceneFace.material];
-  const Color surfaceColor = material.colorAt(surface);
+  const Color surfaceColor = material.colorOverFootprint(surface, uvFootprint(face, centre));
   const int side = sideSeen(screenFace);
   Color color;
   switch (shading_) {
@@ -118,8 +135,15 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
       break;
     }
     case Shading::Phong:
-      color =
-          illuminate(material, surfaceColor, surface.position, towardsEye(surface.normal, side));
+      // Bump and normal maps tilt the normal at every pixel, Phong shading
+      // alone having a normal per pixel.
+      if (material.bump || material.normalMap) {
+        triangleTangents(a.position, b.position, c.position, a.uv, b.uv, c.uv, surface.dpdu,
+                         surface.dpdv);
+        surface.shadingNormal = material.shadingNormalAt(surface);
+      }
+      color = illuminate(material, surfaceColor, surface.position,
+                         towardsEye(surface.shadingNormal, side));
       break;
   }
   return {color, glm::length(surface.position - eye_), surface.normal};

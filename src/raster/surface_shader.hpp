@@ -14,7 +14,8 @@
 //
 // Interpolation is perspective-correct, by the face's barycentric
 // coordinates at the pixel's centre in the world (ScreenFace). A texture's
-// colour C is looked up at every pixel whatever the shading: flat and Gouraud
+// colour C is looked up at every pixel whatever the shading, over the
+// pixel's footprint in the texture (for mipmapping): flat and Gouraud
 // keep apart the part of the model that C multiplies (ambient and diffuse)
 // and the part it does not (the highlight), as OpenGL's separate specular
 // colour does, and combine them with C at the pixel.
@@ -61,6 +62,7 @@ class SurfaceShader {
     Color with(const Color& surfaceColor) const { return surfaceColor * byColor + added; }
   };
 
+  PixelFootprint uvFootprint(int face, const Vec2& centre) const;
   Color illuminate(const Material& material, const Color& surfaceColor, const Vec3& position,
                    const Vec3& normal) const;
   Illumination illumination(const Material& material, const Vec3& position,

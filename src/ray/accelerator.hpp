@@ -42,7 +42,9 @@ class Accelerator {
   virtual ~Accelerator() = default;
 
   // The nearest hit with t in (tMin, hit.t), recorded in `hit` exactly as the
-  // shape's own intersect would record it.
+  // shape's own intersect would record it. Of primitives hit at the very same
+  // t (a ray through the edge two triangles share), the first in the scene's
+  // order, as brute force finds it (Embree keeps whichever it meets first).
   virtual bool nearest(const Ray& ray, float tMin, Hit& hit,
                        IntersectionCounters& counters) const = 0;
 

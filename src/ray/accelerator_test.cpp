@@ -261,6 +261,35 @@ TEST(Accelerators, FilterOncePerShapeCrossed) {
   }
 }
 
+// A square of two triangles, split along its diagonal; `flipped` lists
+// them the other way round.
+std::unique_ptr<Shape> splitSquare(bool flipped) {
+  std::vector<std::array<int, 3>> faces{{0, 1, 2}, {0, 2, 3}};
+  if (flipped) std::swap(faces[0], faces[1]);
+  return std::make_unique<TriangleMesh>(
+      std::vector<Vec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, std::move(faces), kOpaque);
+}
+
+// A ray through the diagonal meets both triangles at the same t. Brute force
+// keeps the first in the mesh's order; the BVH too, whichever it tests
+// first. (Embree keeps the one its own traversal meets first.)
+TEST(Accelerators, BreakTiesAsBruteForceDoes) {
+  const Ray throughDiagonal{{0.25f, 0.25f, -1.0f}, {0.0f, 0.0f, 1.0f}};
+  for (bool flipped : {false, true}) {
+    std::vector<std::unique_ptr<Shape>> shapes;
+    shapes.push_back(splitSquare(flipped));
+    shapes.push_back(std::make_unique<Plane>(Vec3(0.0f), Vec3(0.0f, 0.0f, 1.0f), kOpaque));
+    for (Accel accel : {Accel::None, Accel::Spheres, Accel::Bvh}) {
+      Hit hit;
+      IntersectionCounters counters;
+      ASSERT_TRUE(buildAccelerator(accel, shapes)->nearest(throughDiagonal, 0.0f, hit, counters));
+      EXPECT_EQ(hit.t, 1.0f);
+      EXPECT_EQ(hit.shape, shapes[0].get()) << accelName(accel) << ": the plane is second";
+      EXPECT_EQ(hit.primitive, 0) << accelName(accel) << (flipped ? ", flipped" : "");
+    }
+  }
+}
+
 TEST(Accelerators, AreNamedAsOnTheCommandLine) {
   std::vector<std::string_view> names;
   for (Accel accel : kAllAccels) names.push_back(accelName(accel));

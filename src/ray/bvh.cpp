@@ -1,6 +1,7 @@
 #include "ray/bvh.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <thread>
 
@@ -157,12 +158,51 @@ void Bvh::traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCo
   counters.nodesVisited += boxesTested;
 }
 
+// A ray through the edge that two triangles share meets both at the same t.
+// Brute force keeps the first it tests, the first in the scene's order; so
+// does the BVH, whatever order it tests them in, so that every structure
+// gives the same hit.
+class NearestHit {
+ public:
+  explicit NearestHit(Hit& hit) : hit_(hit) {}
+
+  // Offers the hit of one primitive, found by `intersect(candidate)`.
+  template <typename Intersect>
+  bool offer(PrimitiveRef ref, Intersect&& intersect) {
+    Hit candidate = hit_;
+    candidate.t = std::nextafter(hit_.t, kInfinity);  // an equal t too
+    if (!intersect(candidate)) return false;
+    if (candidate.t == hit_.t && !(found_ && comesBefore(ref, ref_))) return false;
+    hit_ = candidate;
+    ref_ = ref;
+    found_ = true;
+    return true;
+  }
+
+ private:
+  static bool comesBefore(PrimitiveRef a, PrimitiveRef b) {
+    return a.shape < b.shape || (a.shape == b.shape && a.primitive < b.primitive);
+  }
+
+  Hit& hit_;
+  PrimitiveRef ref_{0, 0};
+  bool found_ = false;
+};
+
 bool Bvh::nearest(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& counters) const {
+  NearestHit nearest(hit);
   bool found = false;
-  for (int shape : unbounded_) found |= shapes_[shape]->intersect(ray, tMin, hit, counters);
+  for (int shape : unbounded_) {
+    found |= nearest.offer({static_cast<std::uint32_t>(shape), 0}, [&](Hit& candidate) {
+      return shapes_[shape]->intersect(ray, tMin, candidate, counters);
+    });
+  }
   traverse(ray, tMin, hit.t, counters, [&](const BvhNode& leaf) {
-    for (std::uint32_t i = leaf.offset; i < leaf.offset + leaf.primitiveCount; ++i)
-      found |= intersectPrimitive(primitives_[i], ray, tMin, hit, counters);
+    for (std::uint32_t i = leaf.offset; i < leaf.offset + leaf.primitiveCount; ++i) {
+      found |= nearest.offer(primitives_[i].ref, [&](Hit& candidate) {
+        return intersectPrimitive(primitives_[i], ray, tMin, candidate, counters);
+      });
+    }
     return true;
   });
   return found;

@@ -15,7 +15,10 @@
 //
 // The counters see only the tests RISE makes: user geometry, and the one
 // test that confirms Embree's nearest triangle; Embree's own box and
-// triangle tests are not counted, and no nodes are.
+// triangle tests are not counted, and no nodes are. Of two triangles hit at
+// the very same t, Embree keeps the one it meets first, which may not be the
+// one brute force keeps: on rare pixels the image may differ from the other
+// structures' by a shade.
 #pragma once
 
 #include <embree3/rtcore.h>

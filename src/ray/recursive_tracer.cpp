@@ -19,9 +19,10 @@ struct ShadingFrame {
 
 namespace {
 
-ShadingFrame shadingFrame(const Ray& ray, const Hit& hit) {
+ShadingFrame shadingFrame(const Ray& ray, const Hit& hit, const Material& material) {
   ShadingFrame frame;
   frame.surface = hit.shape->surfaceAt(ray, hit);
+  frame.surface.shadingNormal = material.shadingNormalAt(frame.surface);
   frame.toViewer = -glm::normalize(ray.direction);
   frame.time = ray.time;
   frame.entering = glm::dot(frame.surface.normal, frame.toViewer) > 0.0f;
@@ -61,16 +62,18 @@ SampleResult RecursiveTracer::tracePrimary(const Ray& ray, PathSampler& paths,
   Hit hit;
   if (!intersector_.nearest(ray, 0.0f, hit, counters.intersections))
     return {scene_.image.background};
-  const ShadingFrame frame = shadingFrame(ray, hit);
-  return {shade(frame, scene_.materialOf(*hit.shape), 1, paths, counters),
-          hit.t * glm::length(ray.direction), frame.surface.normal};
+  const Material& material = scene_.materialOf(*hit.shape);
+  const ShadingFrame frame = shadingFrame(ray, hit, material);
+  return {shade(frame, material, 1, paths, counters), hit.t * glm::length(ray.direction),
+          frame.surface.normal};
 }
 
 Color RecursiveTracer::trace(const Ray& ray, int depth, PathSampler& paths,
                              TraceCounters& counters) const {
   Hit hit;
   if (!intersector_.nearest(ray, 0.0f, hit, counters.intersections)) return scene_.image.background;
-  return shade(shadingFrame(ray, hit), scene_.materialOf(*hit.shape), depth, paths, counters);
+  const Material& material = scene_.materialOf(*hit.shape);
+  return shade(shadingFrame(ray, hit, material), material, depth, paths, counters);
 }
 
 Color RecursiveTracer::shade(const ShadingFrame& frame, const Material& material, int depth,

@@ -4,6 +4,8 @@
 #include <string>
 
 #include "core/color.hpp"
+#include "scene/bump_map.hpp"
+#include "scene/normal_map.hpp"
 #include "scene/texture.hpp"
 
 namespace rise {
@@ -27,10 +29,20 @@ struct Material {
   // mirror or clear glass.
   float roughness = 0.0f;
 
-  std::shared_ptr<const Texture> texture;  // when set, replaces color over the surface
+  std::shared_ptr<const Texture> texture;      // when set, replaces color over the surface
+  std::shared_ptr<const BumpMap> bump;         // when set, tilts the shading normal
+  std::shared_ptr<const NormalMap> normalMap;  // when set, replaces it, before any bump
 
   Color colorAt(const SurfacePoint& surface) const {
     return texture ? texture->colorAt(surface) : color;
+  }
+  Color colorOverFootprint(const SurfacePoint& surface, const PixelFootprint& footprint) const {
+    return texture ? texture->colorOverFootprint(surface, footprint) : color;
+  }
+  Vec3 shadingNormalAt(const SurfacePoint& surface) const {
+    SurfacePoint tilted = surface;
+    if (normalMap) tilted.shadingNormal = normalMap->shadingNormalAt(surface);
+    return bump ? bump->shadingNormalAt(tilted) : tilted.shadingNormal;
   }
   bool isTransparent() const { return transmission > 0.0f; }
 };

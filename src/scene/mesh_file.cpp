@@ -16,6 +16,7 @@
 #include <new>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "scene/vertex_normals.hpp"
 
@@ -176,6 +177,23 @@ std::int32_t littleEndianInt(const unsigned char* bytes) {
       static_cast<std::uint32_t>(bytes[2]) << 16 | static_cast<std::uint32_t>(bytes[3]) << 24);
 }
 
+// The skin names of an MD2 header (64-byte strings), or none when the file
+// is too short to hold them.
+std::vector<std::string> md2SkinNames(const std::filesystem::path& path) {
+  constexpr int kHeaderSize = 68, kSkinNameSize = 64;
+  constexpr int kSkinCount = 5, kSkinsOffset = 11;
+  std::ifstream file(path, std::ios::binary);
+  std::array<unsigned char, kHeaderSize> header{};
+  if (!file.read(reinterpret_cast<char*>(header.data()), kHeaderSize)) return {};
+  const std::int32_t count = littleEndianInt(header.data() + 4 * kSkinCount);
+  file.seekg(littleEndianInt(header.data() + 4 * kSkinsOffset));
+  std::vector<std::string> names;
+  std::array<char, kSkinNameSize> name{};
+  for (std::int32_t i = 0; i < count && file.read(name.data(), kSkinNameSize); ++i)
+    names.emplace_back(name.data(), strnlen(name.data(), kSkinNameSize));
+  return names;
+}
+
 }  // namespace
 
 MeshGeometry loadMeshFile(const std::filesystem::path& path, int md2Keyframe) {
@@ -190,6 +208,24 @@ MeshGeometry loadMeshFile(const std::filesystem::path& path, int md2Keyframe) {
   } catch (const std::exception& error) {
     throw MeshFileError(tidied(error.what()));
   }
+}
+
+std::optional<std::filesystem::path> findMd2Skin(const std::filesystem::path& model) {
+  const std::filesystem::path folder = model.parent_path();
+  std::vector<std::filesystem::path> candidates;
+  for (const std::string& name : md2SkinNames(model))
+    candidates.push_back(folder / std::filesystem::path(name).filename());
+  candidates.push_back(folder / (model.stem().string() + ".pcx"));
+  for (const std::filesystem::path& candidate : candidates)
+    if (std::filesystem::is_regular_file(candidate)) return candidate;
+  std::vector<std::filesystem::path> images;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(
+           folder.empty() ? std::filesystem::path(".") : folder, error))
+    if (entry.is_regular_file() && lowercase(entry.path().extension().string()) == ".pcx")
+      images.push_back(entry.path());
+  if (images.size() == 1) return images.front();
+  return std::nullopt;
 }
 
 bool isMd2File(const std::filesystem::path& path) {

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -38,6 +39,12 @@ bool isMd2File(const std::filesystem::path& path);
 // The number of keyframes of an MD2 model, from its 68-byte header, which
 // must promise no more keyframes than the file holds.
 int md2KeyframeCount(const std::filesystem::path& path);
+
+// The skin of an MD2 model, found in the model's folder: the first skin its
+// header names (by file name, as the names are paths in the game's
+// archive), else the PCX image named like the model, else the folder's only
+// PCX image (Quake II keeps a model's skins beside its tris.md2).
+std::optional<std::filesystem::path> findMd2Skin(const std::filesystem::path& model);
 
 // Two keyframes of an MD2 model: the same triangles in two poses.
 std::pair<MeshGeometry, MeshGeometry> loadMd2Keyframes(const std::filesystem::path& path, int first,

@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/image_io.hpp"
+#include "scene/image_texture.hpp"
 #include "scene/mesh_file.hpp"
 #include "scene/shapes/box.hpp"
 #include "scene/shapes/cone.hpp"
@@ -28,6 +30,7 @@
 #include "scene/shapes/transformed_shape.hpp"
 #include "scene/shapes/triangle.hpp"
 #include "scene/shapes/triangle_mesh.hpp"
+#include "scene/texture_reader.hpp"
 #include "scene/transform.hpp"
 #include "scene/yaml_reader.hpp"
 
@@ -228,28 +231,21 @@ std::unique_ptr<Light> readLight(const Field& item) {
   return kind.read(light, readLightColor(light));
 }
 
-// "texture: {checker: {colors: [[1, 1, 1], [0, 0, 0]], size: 1}}".
-std::shared_ptr<const Texture> readTexture(const Field& field) {
-  const MapEntry entry = readKindAndProperties(field, "texture", {"checker"});
-  const std::string name = entry.key + " texture";
-  const CheckedMap checker(makeField(entry.value, name, entry.keyMark), name, {"colors", "size"});
-  const std::vector<Field> colors =
-      readList(checker.required("colors"), "a list of 2 colours", "a colour of the checker", 2, 2);
-  float size = 1.0f;
-  readIfPresent(checker, "size", size, readPositive);
-  return std::make_shared<CheckerTexture>(readColor(colors[0]), readColor(colors[1]), size);
-}
-
-Material readMaterial(const MapEntry& entry) {
+Material readMaterial(const MapEntry& entry, const std::filesystem::path& sceneDirectory) {
   const std::string name = "material '" + entry.key + "'";
   const CheckedMap map(
       makeField(entry.value, name, entry.keyMark), name,
-      {"color", "texture", "ka", "kd", "ks", "n", "reflection", "transmission", "ior",
-       "roughness"});
+      {"color", "texture", "bump", "normal_map", "ka", "kd", "ks", "n", "reflection",
+       "transmission", "ior", "roughness"});
   Material material;
   material.name = entry.key;
   readIfPresent(map, "color", material.color, readColor);
-  readIfPresent(map, "texture", material.texture, readTexture);
+  if (const std::optional<Field> texture = map.optional("texture"))
+    material.texture = readTexture(*texture, sceneDirectory);
+  if (const std::optional<Field> bump = map.optional("bump"))
+    material.bump = readBump(*bump, sceneDirectory);
+  if (const std::optional<Field> normalMap = map.optional("normal_map"))
+    material.normalMap = readNormalMap(*normalMap, sceneDirectory);
   readIfPresent(map, "ka", material.ka, readNonNegative);
   readIfPresent(map, "kd", material.kd, readNonNegative);
   readIfPresent(map, "ks", material.ks, readNonNegative);
@@ -261,11 +257,12 @@ Material readMaterial(const MapEntry& entry) {
   return material;
 }
 
-std::vector<Material> readMaterials(const Field& field) {
+std::vector<Material> readMaterials(const Field& field,
+                                    const std::filesystem::path& sceneDirectory) {
   std::vector<Material> materials;
   for (const MapEntry& entry :
        readMap(field, "a map from material names to materials", "'materials'"))
-    materials.push_back(readMaterial(entry));
+    materials.push_back(readMaterial(entry, sceneDirectory));
   return materials;
 }
 
@@ -483,6 +480,33 @@ std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4
   return readInlineMesh(mesh, material, worldFromObject);
 }
 
+// An MD2 model whose material has no texture wears its skin (findMd2Skin):
+// the material again, under the name "<material> with <skin>", with the skin
+// as its texture, shared by every model that wears the same skin.
+int withMd2Skin(const CheckedMap& mesh, int material, std::vector<Material>& materials,
+                const std::filesystem::path& sceneDirectory) {
+  const std::optional<Field> file = mesh.optional("file");
+  if (!file || materials[material].texture) return material;
+  const std::filesystem::path model = sceneDirectory / readName(*file);
+  if (!isMd2File(model)) return material;
+  const std::optional<std::filesystem::path> skin = findMd2Skin(model);
+  if (!skin) return material;
+  const std::string name = materials[material].name + " with " + skin->filename().string();
+  const auto worn = std::find_if(materials.begin(), materials.end(),
+                                 [&](const Material& m) { return m.name == name; });
+  if (worn != materials.end()) return static_cast<int>(worn - materials.begin());
+  Material skinned = materials[material];
+  skinned.name = name;
+  try {
+    skinned.texture = std::make_shared<ImageTexture>(
+        std::make_shared<const Image>(readTextureImage(*skin)), TextureFilter::Bilinear);
+  } catch (const ImageFileError& error) {
+    failAt(file->mark, "cannot load the skin of mesh '" + readName(*file) + "': " + error.what());
+  }
+  materials.push_back(std::move(skinned));
+  return static_cast<int>(materials.size()) - 1;
+}
+
 struct ShapeKind {
   std::string name;
   std::vector<std::string> keys;
@@ -504,7 +528,7 @@ const std::vector<ShapeKind>& shapeKinds() {
   return kinds;
 }
 
-std::unique_ptr<Shape> readObject(const Field& item, const std::vector<Material>& materials,
+std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& materials,
                                   const std::filesystem::path& sceneDirectory) {
   std::vector<std::string> kindNames;
   for (const ShapeKind& kind : shapeKinds()) kindNames.push_back(kind.name);
@@ -515,7 +539,8 @@ std::unique_ptr<Shape> readObject(const Field& item, const std::vector<Material>
   std::vector<std::string> keys = kind.keys;
   keys.insert(keys.end(), {"material", "transform", "motion"});
   const CheckedMap properties(makeField(entry.value, kind.name, entry.keyMark), kind.name, keys);
-  const int material = readMaterialReference(properties.required("material"), materials, kind.name);
+  int material = readMaterialReference(properties.required("material"), materials, kind.name);
+  if (kind.name == "mesh") material = withMd2Skin(properties, material, materials, sceneDirectory);
   TransformSpec transform;
   if (const std::optional<Field> field = properties.optional("transform"))
     transform = readPlacement(*field, "the transform of " + kind.name, TransformSpec{});
@@ -545,11 +570,12 @@ Scene readScene(const YAML::Node& root, std::string source) {
     for (const Field& item : readList(*lights, "a list of lights", "an item of 'lights'"))
       scene.lights.push_back(readLight(item));
   }
-  readIfPresent(map, "materials", scene.materials, readMaterials);
+  const std::filesystem::path sceneDirectory = std::filesystem::path(scene.source).parent_path();
+  if (const std::optional<Field> materials = map.optional("materials"))
+    scene.materials = readMaterials(*materials, sceneDirectory);
   for (const Field& item :
        readList(map.required("objects"), "a list of objects", "an item of 'objects'"))
-    scene.shapes.push_back(
-        readObject(item, scene.materials, std::filesystem::path(scene.source).parent_path()));
+    scene.shapes.push_back(readObject(item, scene.materials, sceneDirectory));
   return scene;
 }
 

@@ -29,7 +29,10 @@ struct Hit {
 // shading uses. The shading normal is the geometric one, except on a mesh with
 // vertex normals, where it is interpolated across each triangle so that the
 // facets do not show (Phong, "Illumination for Computer Generated Pictures",
-// CACM 18(6), 1975); it is always on the same side as `normal`.
+// CACM 18(6), 1975); it is always on the same side as `normal`. dpdu and dpdv
+// are how the position changes with the texture coordinates, the tangents
+// along which a bump map tilts the shading normal; zero where a surface has
+// no such mapping.
 struct SurfacePoint {
   SurfacePoint() = default;
   SurfacePoint(const Vec3& position, const Vec3& normal, const Vec2& uv = Vec2(0.0f))
@@ -39,6 +42,8 @@ struct SurfacePoint {
   Vec3 normal{0.0f};
   Vec2 uv{0.0f};
   Vec3 shadingNormal{0.0f};
+  Vec3 dpdu{0.0f};
+  Vec3 dpdv{0.0f};
 };
 
 // What intersecting costs, counted per ray and summed into the render's

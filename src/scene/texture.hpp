@@ -5,12 +5,26 @@
 
 namespace rise {
 
+// How far the texture coordinates move from a pixel to the next one across
+// and to the one below: the pixel's footprint in the texture, which the
+// visible-surface algorithms know from the screen-space derivatives.
+struct PixelFootprint {
+  Vec2 acrossX{0.0f};
+  Vec2 downY{0.0f};
+};
+
 // A colour that varies over a surface, looked up by the surface's texture
 // coordinates.
 class Texture {
  public:
   virtual ~Texture() = default;
   virtual Color colorAt(const SurfacePoint& surface) const = 0;
+  // The colour averaged over the pixel's footprint, for the algorithms that
+  // know it. A texture that does not filter answers colorAt.
+  virtual Color colorOverFootprint(const SurfacePoint& surface,
+                                   const PixelFootprint& /*footprint*/) const {
+    return colorAt(surface);
+  }
 };
 
 // Squares of two colours alternating in u and v, `size` units wide: the

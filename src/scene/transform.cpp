@@ -35,11 +35,21 @@ SurfacePoint AffineMap::toWorld(const SurfacePoint& object) const {
   world.position = pointToWorld(object.position);
   world.normal = glm::normalize(normalToWorld_ * object.normal);
   world.shadingNormal = glm::normalize(normalToWorld_ * object.shadingNormal);
+  world.dpdu = Mat3(worldFromObject_) * object.dpdu;
+  world.dpdv = Mat3(worldFromObject_) * object.dpdv;
   return world;
 }
 
 Vec3 AffineMap::pointToWorld(const Vec3& point) const {
   return Vec3(worldFromObject_ * glm::vec4(point, 1.0f));
+}
+
+Bounds3 AffineMap::boundsToWorld(const Bounds3& objectBox) const {
+  if (objectBox.isEmpty()) return objectBox;
+  if (!objectBox.isFinite()) return Bounds3::infinite();
+  Bounds3 box;
+  for (int corner = 0; corner < 8; ++corner) box.grow(pointToWorld(objectBox.corner(corner)));
+  return box;
 }
 
 }  // namespace rise

@@ -36,6 +36,11 @@ class AffineMap {
   Ray toObject(const Ray& worldRay) const;
   SurfacePoint toWorld(const SurfacePoint& object) const;
   Vec3 pointToWorld(const Vec3& point) const;
+  // The box around the image of a box: an affine map takes a box to a
+  // parallelepiped, which lies inside the box around its eight corners.
+  Bounds3 boundsToWorld(const Bounds3& objectBox) const;
+
+  const Mat4& worldFromObject() const { return worldFromObject_; }
 
  private:
   Mat4 worldFromObject_;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 
+#include "scene/surface_mapping.hpp"
+
 namespace rise {
 
 namespace {
@@ -63,7 +65,11 @@ bool Box::intersect(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& 
 }
 
 SurfacePoint Box::surfaceAt(const Ray& ray, const Hit& hit) const {
-  return {ray.at(hit.t), faceNormal(hit.primitive)};
+  const Vec3 position = ray.at(hit.t);
+  const Vec3 normal = faceNormal(hit.primitive);
+  SurfacePoint surface(position, normal, cubeFaceUv(position, normal, min_, max_));
+  cubeFaceTangents(normal, min_, max_, surface.dpdu, surface.dpdv);
+  return surface;
 }
 
 Bounds3 Box::bounds() const { return {min_, max_}; }
@@ -80,7 +86,8 @@ void Box::tessellate(const TessellationSettings&, Tessellation& out) const {
       Vec3 position = maxSide ? max_ : min_;
       position[u] = (corner == 1 || corner == 2) ? max_[u] : min_[u];
       position[v] = corner >= 2 ? max_[v] : min_[v];
-      corners[corner] = out.addVertex({position, faceNormal(face)});
+      const Vec3 normal = faceNormal(face);
+      corners[corner] = out.addVertex({position, normal, cubeFaceUv(position, normal, min_, max_)});
     }
     if (!maxSide) std::reverse(corners.begin(), corners.end());
     out.addConvexPolygon(corners);

@@ -5,6 +5,7 @@
 
 #include "scene/shapes/disk.hpp"
 #include "scene/shapes/quadratic.hpp"
+#include "scene/surface_mapping.hpp"
 
 namespace rise {
 
@@ -62,13 +63,24 @@ bool Cone::intersect(const Ray& ray, float tMin, Hit& hit, IntersectionCounters&
 
 SurfacePoint Cone::surfaceAt(const Ray& ray, const Hit& hit) const {
   const Vec3 position = ray.at(hit.t);
-  if (hit.primitive == kBaseCap) return {position, -axis_};
+  if (hit.primitive == kBaseCap) {
+    SurfacePoint surface(position, -axis_, diskUv(position, base_, -axis_, radius_));
+    diskTangents(-axis_, radius_, surface.dpdu, surface.dpdv);
+    return surface;
+  }
   // The gradient of the quadric, which points out of the cone.
   const Vec3 fromApex = position - apex_;
-  const Vec3 gradient = fromApex - slopeFactor_ * glm::dot(fromApex, axis_) * axis_;
+  const float heightBelowApex = -glm::dot(fromApex, axis_);
+  const Vec2 uv(turnAroundAxis(axis_, fromApex), 1.0f - heightBelowApex / height_);
+  const Vec3 gradient = fromApex + slopeFactor_ * heightBelowApex * axis_;
   // The apex has no tangent plane; the axis stands in for its normal.
-  if (glm::dot(gradient, gradient) == 0.0f) return {position, axis_};
-  return {position, glm::normalize(gradient)};
+  if (glm::dot(gradient, gradient) == 0.0f) return {position, axis_, uv};
+  SurfacePoint surface(position, glm::normalize(gradient), uv);
+  // Up the slant, from the rim (v = 0) to the apex (v = 1).
+  const Vec3 across = fromApex + heightBelowApex * axis_;
+  surface.dpdu = turnTangent(axis_, across);
+  surface.dpdv = -fromApex / (1.0f - uv.y);
+  return surface;
 }
 
 Bounds3 Cone::bounds() const {
@@ -85,16 +97,23 @@ void Cone::tessellate(const TessellationSettings& settings, Tessellation& out) c
   const auto sideNormal = [&](const Vec3& direction) {
     return glm::normalize(height_ * direction + radius_ * axis_);
   };
-  const std::vector<Vec3> around = directionsAround(axis_, segmentsPerTurn(settings.level));
+  const int segments = segmentsPerTurn(settings.level);
+  const std::vector<Vec3> around = directionsAround(axis_, segments);
+  const auto uAt = [segments](int k, float fraction) {
+    return turnAtStep(static_cast<float>(k) + fraction, segments);
+  };
   std::vector<int> cap;
-  for (std::size_t k = 0; k < around.size(); ++k) {
+  for (int k = 0; k < segments; ++k) {
     const Vec3& direction = around[k];
-    const Vec3& nextDirection = around[(k + 1) % around.size()];
-    const int rim = out.addVertex({base_ + radius_ * direction, sideNormal(direction)});
-    const int nextRim = out.addVertex({base_ + radius_ * nextDirection, sideNormal(nextDirection)});
-    const int apex = out.addVertex({apex_, sideNormal(glm::normalize(direction + nextDirection))});
+    const Vec3& nextDirection = around[(k + 1) % segments];
+    const Vec3 atRim = base_ + radius_ * direction;
+    const int rim = out.addVertex({atRim, sideNormal(direction), {uAt(k, 0.0f), 0.0f}});
+    const int nextRim = out.addVertex(
+        {base_ + radius_ * nextDirection, sideNormal(nextDirection), {uAt(k, 1.0f), 0.0f}});
+    const int apex = out.addVertex(
+        {apex_, sideNormal(glm::normalize(direction + nextDirection)), {uAt(k, 0.5f), 1.0f}});
     out.addTriangle(rim, nextRim, apex);
-    cap.push_back(out.addVertex({base_ + radius_ * direction, -axis_}));
+    cap.push_back(out.addVertex({atRim, -axis_, diskUv(atRim, base_, -axis_, radius_)}));
   }
   // The cap faces down the axis: its corners turn clockwise around it.
   std::reverse(cap.begin(), cap.end());

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "scene/shapes/plane.hpp"
+#include "scene/surface_mapping.hpp"
 
 namespace rise {
 
@@ -79,6 +80,23 @@ ConvexPolygon::ConvexPolygon(std::vector<Vec3> vertices, int material)
   edgeInwardNormals_.reserve(vertices_.size());
   for (std::size_t i = 0; i < vertices_.size(); ++i)
     edgeInwardNormals_.push_back(glm::cross(normal_, nextVertex(vertices_, i) - vertices_[i]));
+  // The first edge that has a length: a polygon may repeat a vertex.
+  std::size_t edge = 0;
+  while (nextVertex(vertices_, edge) == vertices_[edge]) ++edge;
+  uAxis_ = glm::normalize(nextVertex(vertices_, edge) - vertices_[edge]);
+  vAxis_ = glm::cross(normal_, uAxis_);
+  Vec2 lowest(kInfinity), highest(-kInfinity);
+  for (const Vec3& vertex : vertices_) {
+    const Vec2 mapped = planarUv(vertex, vertices_[0], uAxis_, vAxis_);
+    lowest = glm::min(lowest, mapped);
+    highest = glm::max(highest, mapped);
+  }
+  uvLowest_ = lowest;
+  uvSize_ = highest - lowest;
+}
+
+Vec2 ConvexPolygon::textureCoordinates(const Vec3& position) const {
+  return (planarUv(position, vertices_[0], uAxis_, vAxis_) - uvLowest_) / uvSize_;
 }
 
 bool ConvexPolygon::intersect(const Ray& ray, float tMin, Hit& hit,
@@ -95,7 +113,11 @@ bool ConvexPolygon::intersect(const Ray& ray, float tMin, Hit& hit,
 }
 
 SurfacePoint ConvexPolygon::surfaceAt(const Ray& ray, const Hit& hit) const {
-  return {ray.at(hit.t), normal_};
+  const Vec3 position = ray.at(hit.t);
+  SurfacePoint surface(position, normal_, textureCoordinates(position));
+  surface.dpdu = uvSize_.x * uAxis_;
+  surface.dpdv = uvSize_.y * vAxis_;
+  return surface;
 }
 
 Bounds3 ConvexPolygon::bounds() const {
@@ -106,7 +128,8 @@ Bounds3 ConvexPolygon::bounds() const {
 
 void ConvexPolygon::tessellate(const TessellationSettings&, Tessellation& out) const {
   std::vector<int> corners;
-  for (const Vec3& vertex : vertices_) corners.push_back(out.addVertex({vertex, normal_}));
+  for (const Vec3& vertex : vertices_)
+    corners.push_back(out.addVertex({vertex, normal_, textureCoordinates(vertex)}));
   out.addConvexPolygon(corners);
 }
 

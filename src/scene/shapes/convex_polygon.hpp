@@ -12,7 +12,9 @@ namespace rise {
 bool isPlanarConvexPolygon(const std::vector<Vec3>& vertices);
 
 // Intersected as its plane, then kept if the point is on the inner side of
-// every edge; the edges belong to the polygon.
+// every edge; the edges belong to the polygon. Its texture coordinates are a
+// planar mapping, u along the first edge and v across it, scaled so that the
+// rectangle around the polygon is the unit square.
 class ConvexPolygon final : public Shape {
  public:
   ConvexPolygon(std::vector<Vec3> vertices, int material);
@@ -29,6 +31,12 @@ class ConvexPolygon final : public Shape {
   // For the edge from vertex i to vertex i + 1: the normal in the polygon's
   // plane pointing into the polygon.
   std::vector<Vec3> edgeInwardNormals_;
+  Vec3 uAxis_;
+  Vec3 vAxis_;
+  Vec2 uvLowest_;  // the mapped corner of the rectangle around the polygon
+  Vec2 uvSize_;
+
+  Vec2 textureCoordinates(const Vec3& position) const;
 };
 
 }  // namespace rise

@@ -6,6 +6,7 @@
 
 #include "scene/shapes/disk.hpp"
 #include "scene/shapes/quadratic.hpp"
+#include "scene/surface_mapping.hpp"
 
 namespace rise {
 
@@ -65,14 +66,20 @@ bool Cylinder::intersect(const Ray& ray, float tMin, Hit& hit,
 
 SurfacePoint Cylinder::surfaceAt(const Ray& ray, const Hit& hit) const {
   const Vec3 position = ray.at(hit.t);
-  switch (hit.primitive) {
-    case kBaseCap:
-      return {position, -axis_};
-    case kTopCap:
-      return {position, axis_};
-    default:
-      return {position, glm::normalize(acrossAxis(position - base_, axis_))};
+  if (hit.primitive != kSide) {
+    const Vec3 normal = hit.primitive == kTopCap ? axis_ : -axis_;
+    const Vec3 center = hit.primitive == kTopCap ? top_ : base_;
+    SurfacePoint surface(position, normal, diskUv(position, center, normal, radius_));
+    diskTangents(normal, radius_, surface.dpdu, surface.dpdv);
+    return surface;
   }
+  const Vec3 across = acrossAxis(position - base_, axis_);
+  const Vec3 normal = glm::normalize(across);
+  const float height = glm::dot(position - base_, axis_);
+  SurfacePoint surface(position, normal, {turnAroundAxis(axis_, normal), height / height_});
+  surface.dpdu = turnTangent(axis_, across);
+  surface.dpdv = height_ * axis_;
+  return surface;
 }
 
 Bounds3 Cylinder::bounds() const {
@@ -82,20 +89,25 @@ Bounds3 Cylinder::bounds() const {
 }
 
 // Flat rectangles around the side, with the side's normals at their corners,
-// and a polygon for each cap.
+// and a polygon for each cap. The side repeats its first column at the end,
+// with u = 1 instead of 0, so that the texture has no jump at the seam.
 void Cylinder::tessellate(const TessellationSettings& settings, Tessellation& out) const {
+  const int segments = segmentsPerTurn(settings.level);
+  const std::vector<Vec3> around = directionsAround(axis_, segments);
   std::vector<int> bottom, top, baseCap, topCap;
-  for (const Vec3& direction : directionsAround(axis_, segmentsPerTurn(settings.level))) {
-    bottom.push_back(out.addVertex({base_ + radius_ * direction, direction}));
-    top.push_back(out.addVertex({top_ + radius_ * direction, direction}));
-    baseCap.push_back(out.addVertex({base_ + radius_ * direction, -axis_}));
-    topCap.push_back(out.addVertex({top_ + radius_ * direction, axis_}));
+  for (int k = 0; k <= segments; ++k) {
+    const Vec3& direction = around[k % segments];
+    const Vec3 atBase = base_ + radius_ * direction;
+    const Vec3 atTop = top_ + radius_ * direction;
+    const float u = turnAtStep(static_cast<float>(k), segments);
+    bottom.push_back(out.addVertex({atBase, direction, {u, 0.0f}}));
+    top.push_back(out.addVertex({atTop, direction, {u, 1.0f}}));
+    if (k == segments) break;
+    baseCap.push_back(out.addVertex({atBase, -axis_, diskUv(atBase, base_, -axis_, radius_)}));
+    topCap.push_back(out.addVertex({atTop, axis_, diskUv(atTop, top_, axis_, radius_)}));
   }
-  const std::size_t segments = bottom.size();
-  for (std::size_t k = 0; k < segments; ++k) {
-    const std::size_t next = (k + 1) % segments;
-    out.addConvexPolygon(std::array{bottom[k], bottom[next], top[next], top[k]});
-  }
+  for (int k = 0; k < segments; ++k)
+    out.addConvexPolygon(std::array{bottom[k], bottom[k + 1], top[k + 1], top[k]});
   // The base cap faces down the axis: its corners turn the other way.
   std::reverse(baseCap.begin(), baseCap.end());
   out.addConvexPolygon(baseCap);

@@ -5,6 +5,7 @@
 
 #include "scene/shapes/triangle.hpp"
 #include "scene/shapes/vertex_attributes.hpp"
+#include "scene/surface_mapping.hpp"
 
 namespace rise {
 
@@ -37,8 +38,11 @@ SurfacePoint KeyframedMesh::pointOn(int triangle, float time, const Vec2& baryce
     surface.shadingNormal =
         interpolatedNormal(surface.normal, normalAt(a), normalAt(b), normalAt(c), barycentric);
   }
-  if (!start_.uvs.empty())
+  if (!start_.uvs.empty()) {
     surface.uv = atBarycentric(start_.uvs[a], start_.uvs[b], start_.uvs[c], barycentric);
+    triangleTangents(v0, v1, v2, start_.uvs[a], start_.uvs[b], start_.uvs[c], surface.dpdu,
+                     surface.dpdv);
+  }
   return surface;
 }
 

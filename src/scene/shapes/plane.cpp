@@ -41,7 +41,10 @@ bool Plane::intersect(const Ray& ray, float tMin, Hit& hit, IntersectionCounters
 
 SurfacePoint Plane::surfaceAt(const Ray& ray, const Hit& hit) const {
   const Vec3 position = ray.at(hit.t);
-  return {position, normal_, textureCoordinates(position)};
+  SurfacePoint surface(position, normal_, textureCoordinates(position));
+  surface.dpdu = uAxis_;
+  surface.dpdv = vAxis_;
+  return surface;
 }
 
 Vec2 Plane::textureCoordinates(const Vec3& position) const {

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "scene/shape.hpp"
+#include "scene/transform.hpp"
 
 namespace rise {
 
@@ -28,13 +29,8 @@ class TransformedShape final : public Shape {
                           IntersectionCounters& counters) const override;
 
  private:
-  Ray objectRay(const Ray& worldRay) const;
-  Bounds3 toWorld(const Bounds3& objectBox) const;
-
   std::unique_ptr<Shape> shape_;
-  Mat4 worldFromObject_;
-  Mat4 objectFromWorld_;
-  Mat3 normalToWorld_;
+  AffineMap placement_;
 };
 
 }  // namespace rise

@@ -18,7 +18,12 @@ bool Triangle::intersect(const Ray& ray, float tMin, Hit& hit,
 }
 
 SurfacePoint Triangle::surfaceAt(const Ray& ray, const Hit& hit) const {
-  return {ray.at(hit.t), normal_};
+  // Texture coordinates are the barycentric ones: (0, 0), (1, 0) and (0, 1)
+  // at the three corners.
+  SurfacePoint surface(ray.at(hit.t), normal_, hit.barycentric);
+  surface.dpdu = vertices_[1] - vertices_[0];
+  surface.dpdv = vertices_[2] - vertices_[0];
+  return surface;
 }
 
 Bounds3 Triangle::bounds() const {
@@ -33,7 +38,9 @@ bool Triangle::primitiveTriangle(int /*primitive*/, std::array<Vec3, 3>& corners
 }
 
 void Triangle::tessellate(const TessellationSettings&, Tessellation& out) const {
-  for (const Vec3& vertex : vertices_) out.addVertex({vertex, normal_});
+  const std::array<Vec2, 3> cornerUvs{Vec2(0.0f, 0.0f), Vec2(1.0f, 0.0f), Vec2(0.0f, 1.0f)};
+  for (int corner = 0; corner < 3; ++corner)
+    out.addVertex({vertices_[corner], normal_, cornerUvs[corner]});
   out.addTriangle(0, 1, 2);
 }
 
