@@ -180,8 +180,9 @@ TEST(Accelerators, FindTheNearestHitOfBruteForce) {
         ASSERT_EQ(actual.shape, expected.shape) << accelName(accel) << ", ray " << i;
         // A shape records only what it needs (a sphere leaves the primitive
         // as it found it): the triangle of a mesh, and the surface.
-        if (expected.shape->primitiveCount() > 1)
+        if (expected.shape->primitiveCount() > 1) {
           EXPECT_EQ(actual.primitive, expected.primitive) << accelName(accel) << ", ray " << i;
+        }
         const SurfacePoint expectedSurface = expected.shape->surfaceAt(ray, expected);
         const SurfacePoint actualSurface = actual.shape->surfaceAt(ray, actual);
         EXPECT_EQ(actualSurface.position, expectedSurface.position) << accelName(accel);

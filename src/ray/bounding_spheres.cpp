@@ -1,6 +1,6 @@
 #include "ray/bounding_spheres.hpp"
 
-#include <cmath>
+#include <array>
 
 #include "scene/shapes/quadratic.hpp"
 

@@ -1,5 +1,6 @@
 #include "ray/embree_accelerator.hpp"
 
+#include <array>
 #include <cassert>
 #include <stdexcept>
 #include <string>

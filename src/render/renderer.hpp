@@ -22,11 +22,11 @@ enum class Shading { Flat, Gouraud, Phong };
 struct RenderSettings {
   int width = 640;
   int height = 480;
-  int maxDepth = 5;  // longest path of a ray tracer: the primary ray is level 1
-  int threads = 0;   // 0: one per hardware thread
-  PixelSampling sampling;     // samples per pixel, their pattern, the reconstruction filter
-  std::uint64_t seed = 0;     // the same seed gives the same image; another, other noise
-  Accel accel = Accel::Bvh;   // the acceleration structure of the ray tracers
+  int maxDepth = 5;          // longest path of a ray tracer: the primary ray is level 1
+  int threads = 0;           // 0: one per hardware thread
+  PixelSampling sampling;    // samples per pixel, their pattern, the reconstruction filter
+  std::uint64_t seed = 0;    // the same seed gives the same image; another, other noise
+  Accel accel = Accel::Bvh;  // the acceleration structure of the ray tracers
   // The visible-surface algorithms (raster/): their shading, whether they
   // drop the back faces of solids, how finely they cut curved surfaces into
   // polygons (a circle into 4 * tessellation segments), and the side of the
