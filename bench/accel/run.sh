@@ -16,10 +16,8 @@ usage: bench/accel/run.sh [--filter REGEX] [--out DIR] [BUILD_DIR]
 EOF
 }
 
-die() {
-  echo "run.sh: $*" >&2
-  exit 1
-}
+# shellcheck source=bench/common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 
 filter="."
 out=out/bench-accel
@@ -44,9 +42,8 @@ while (($# > 0)); do
   shift
 done
 
-build="$(realpath -m "$build")"
-out="$(realpath -m "$out")"
-here="$(dirname "${BASH_SOURCE[0]}")"
+here="$(realpath "$(dirname "${BASH_SOURCE[0]}")")"
+enter_repository
 benchmark="$build/bench/rise_accel_bench"
 [[ -x "$benchmark" ]] ||
   die "no $benchmark: install libbenchmark-dev (scripts/install-deps --bench) and build again"

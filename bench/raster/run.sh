@@ -28,10 +28,8 @@ usage: bench/raster/run.sh [--frames N] [--threads N] [--out DIR] [BUILD_DIR]
 EOF
 }
 
-die() {
-  echo "run.sh: $*" >&2
-  exit 1
-}
+# shellcheck source=bench/common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 
 frames=5
 threads=2
@@ -60,9 +58,7 @@ done
 [[ "$frames" =~ ^[1-9][0-9]*$ ]] || die "--frames takes a positive count, not '$frames'"
 [[ "$threads" =~ ^[1-9][0-9]*$ ]] || die "--threads takes a positive count, not '$threads'"
 
-build="$(realpath -m "$build")"
-out="$(realpath -m "$out")"
-cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+enter_repository
 [[ -x "$build/rise" ]] || die "no RISE executable at $build/rise (build it, or pass BUILD_DIR)"
 [[ -x "$build/bench/rise_raster_bench" ]] ||
   die "no $build/bench/rise_raster_bench (built with the benchmarks: scripts/install-deps --bench)"

@@ -24,10 +24,8 @@ usage: bench/spheres/run.sh [--aa] [--only rise|povray] [--out DIR] [BUILD_DIR]
 EOF
 }
 
-die() {
-  echo "run.sh: $*" >&2
-  exit 1
-}
+# shellcheck source=bench/common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 
 antialias=false
 only=""
@@ -62,9 +60,7 @@ esac
 
 # Paths given by the caller are relative to where it stands; the renders run
 # from the repository root, where the scene paths are.
-build="$(realpath -m "$build")"
-out="$(realpath -m "$out")"
-cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+enter_repository
 mkdir -p "$out"
 
 if $antialias; then

@@ -20,10 +20,8 @@ usage: bench/table1/run.sh [--runs N] [--threads N] [--out DIR] [BUILD_DIR]
 EOF
 }
 
-die() {
-  echo "run.sh: $*" >&2
-  exit 1
-}
+# shellcheck source=bench/common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 
 runs=1
 threads=0
@@ -54,9 +52,7 @@ done
 
 # Paths given by the caller are relative to where it stands; the renders run
 # from the repository root, where the scene is.
-build="$(realpath -m "$build")"
-out="$(realpath -m "$out")"
-cd "$(dirname "${BASH_SOURCE[0]}")/../.."
+enter_repository
 [[ -x "$build/rise" ]] || die "no RISE executable at $build/rise (build it, or pass BUILD_DIR)"
 mkdir -p "$out"
 
