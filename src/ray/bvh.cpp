@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <experimental/simd>
 #include <limits>
 #include <thread>
 
@@ -38,6 +39,11 @@ std::vector<BuildPrimitive> primitivesOf(const std::vector<const Shape*>& shapes
   return primitives;
 }
 
+// Four floats that arithmetic treats at once, as one SIMD register (the
+// data-parallel types of the C++ Parallelism TS 2, in GCC since 11).
+namespace simd = std::experimental;
+using FourFloats = simd::simd<float, simd::simd_abi::deduce_t<float, kWideBvhWidth>>;
+
 // A ray made ready for many box tests: the slab test (Kay and Kajiya 1986)
 // divides by the direction, so its inverse is computed once, and along each
 // axis the ray enters a box by the face it looks at first, known once from
@@ -49,23 +55,31 @@ class BoxRay {
         inverseDirection_(1.0f / ray.direction),
         entersByMax_(glm::lessThan(inverseDirection_, Vec3(0.0f))) {}
 
-  // Where the ray enters `box` within (tMin, tMax), or infinity if it misses
-  // it there. A direction component of zero makes an infinite inverse; for
-  // an origin on the box's face that gives 0 * infinity = NaN, which the
-  // comparisons below drop (std::max(a, NaN) is a), so that the ray lying in
-  // the face counts as inside. The exit is pushed out by a few ulps (T. Ize,
+  // Where the ray enters each of the node's children's boxes within
+  // (tMin, tMax), or infinity where it misses one there: each step below is
+  // one instruction on the four boxes at once. A direction component of zero
+  // makes an infinite inverse; for an origin on a box's face that gives
+  // 0 * infinity = NaN, which max and min drop (max(a, b) is a > b ? a : b,
+  // which is b when a is NaN), so that the ray lying in the face counts as
+  // inside. The exit is pushed out by a few ulps (T. Ize,
   // "Robust BVH Ray Traversal", JCGT 2(2), 2013), so that rounding never
-  // loses a box the ray grazes.
-  float entry(const Bounds3& box, float tMin, float tMax) const {
-    float enter = tMin;
-    float exit = kInfinity;
+  // loses a box the ray grazes. Always inlined: called apart, it would pass
+  // its result through memory.
+  [[gnu::always_inline]] FourFloats entries(const WideBvhNode& node, float tMin, float tMax) const {
+    FourFloats enter = tMin;
+    FourFloats exit = kInfinity;
     for (int axis = 0; axis < 3; ++axis) {
-      const float nearFace = entersByMax_[axis] ? box.max[axis] : box.min[axis];
-      const float farFace = entersByMax_[axis] ? box.min[axis] : box.max[axis];
-      enter = std::max(enter, (nearFace - origin_[axis]) * inverseDirection_[axis]);
-      exit = std::min(exit, (farFace - origin_[axis]) * inverseDirection_[axis]);
+      const float* nearFaces = entersByMax_[axis] ? node.upper[axis] : node.lower[axis];
+      const float* farFaces = entersByMax_[axis] ? node.lower[axis] : node.upper[axis];
+      const FourFloats nearT =
+          (FourFloats(nearFaces, simd::vector_aligned) - origin_[axis]) * inverseDirection_[axis];
+      const FourFloats farT =
+          (FourFloats(farFaces, simd::vector_aligned) - origin_[axis]) * inverseDirection_[axis];
+      enter = simd::max(nearT, enter);
+      exit = simd::min(farT, exit);
     }
-    return enter <= std::min(exit * kRobustExit, tMax) ? enter : kInfinity;
+    simd::where(!(enter <= simd::min(exit * kRobustExit, FourFloats(tMax))), enter) = kInfinity;
+    return enter;
   }
 
  private:
@@ -76,10 +90,15 @@ class BoxRay {
   glm::bvec3 entersByMax_;
 };
 
-struct PendingNode {
-  std::uint32_t node;
+// A child that traversal has yet to enter: an inner node, or a leaf.
+struct PendingChild {
+  std::uint32_t offset;          // the node, or the leaf's first primitive
+  std::uint32_t primitiveCount;  // 0 for an inner node
   float entry;
 };
+
+// Each inner node visited keeps up to three of its children.
+constexpr int kMaxPendingChildren = (kWideBvhWidth - 1) * kMaxBvhDepth + 1;
 
 int hardwareThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
 
@@ -92,15 +111,16 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Shape>>& shapes, int threads) {
     bounded.push_back(shapes[i]->bounds().isFinite());
     if (!bounded.back()) unbounded_.push_back(static_cast<int>(i));
   }
-  BuiltBvh built =
+  const BuiltBvh built =
       buildBvh(primitivesOf(shapes_, bounded), threads > 0 ? threads : hardwareThreads());
-  nodes_ = std::move(built.nodes);
-  depth_ = built.depth;
+  nodes_ = collapseBvh(built.nodes);
   primitives_.reserve(built.primitives.size());
   for (const PrimitiveRef& ref : built.primitives) {
-    LeafPrimitive& primitive = primitives_.emplace_back(LeafPrimitive{ref, false, {}});
-    primitive.isTriangle =
-        shapes_[ref.shape]->primitiveTriangle(static_cast<int>(ref.primitive), primitive.corners);
+    std::array<Vec3, 3> corners{};
+    const bool isTriangle =
+        shapes_[ref.shape]->primitiveTriangle(static_cast<int>(ref.primitive), corners);
+    primitives_.push_back(
+        {ref, isTriangle, corners[0], corners[1] - corners[0], corners[2] - corners[0]});
   }
 }
 
@@ -110,8 +130,9 @@ bool Bvh::intersectPrimitive(const LeafPrimitive& primitive, const Ray& ray, flo
   const int index = static_cast<int>(primitive.ref.primitive);
   if (!primitive.isTriangle) return shape.intersectPrimitive(index, ray, tMin, hit, counters);
   ++counters.tests;
-  const auto& [v0, v1, v2] = primitive.corners;
-  if (!intersectTriangle(ray, v0, v1, v2, tMin, hit.t, hit.t, hit.barycentric)) return false;
+  if (!intersectTriangleEdges(ray, primitive.corner, primitive.edge1, primitive.edge2, tMin, hit.t,
+                              hit.t, hit.barycentric))
+    return false;
   hit.shape = &shape;
   hit.primitive = index;
   return true;
@@ -122,38 +143,32 @@ void Bvh::traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCo
                    VisitLeaf&& visitLeaf) const {
   if (nodes_.empty()) return;
   const BoxRay boxRay(ray);
-  std::uint64_t boxesTested = 1;
-  if (boxRay.entry(nodes_[0].box, tMin, tMax) == kInfinity) {
-    counters.nodesVisited += boxesTested;
-    return;
-  }
-
-  PendingNode pending[kMaxBvhDepth];
+  std::uint64_t boxesTested = 0;
+  PendingChild pending[kMaxPendingChildren];
   int pendingCount = 0;
-  std::uint32_t current = 0;
+  PendingChild current{0, 0, tMin};  // the root
   while (true) {
-    const BvhNode& node = nodes_[current];
-    if (node.isLeaf()) {
-      if (!visitLeaf(node)) break;
+    if (current.primitiveCount > 0) {
+      if (!visitLeaf(current.offset, current.primitiveCount)) break;
     } else {
-      boxesTested += 2;
-      const std::uint32_t first = node.offset;
-      const float firstEntry = boxRay.entry(nodes_[first].box, tMin, tMax);
-      const float secondEntry = boxRay.entry(nodes_[first + 1].box, tMin, tMax);
-      // Siblings are an even index and the next: index ^ 1 is the sibling.
-      const std::uint32_t near = secondEntry < firstEntry ? first + 1 : first;
-      const float nearEntry = std::min(firstEntry, secondEntry);
-      const float farEntry = std::max(firstEntry, secondEntry);
-      if (farEntry != kInfinity) pending[pendingCount++] = {near ^ 1u, farEntry};
-      if (nearEntry != kInfinity) {
-        current = near;
-        continue;
+      const WideBvhNode& node = nodes_[current.offset];
+      boxesTested += kWideBvhWidth;
+      const FourFloats entries = boxRay.entries(node, tMin, tMax);
+      // The children met go on the stack by insertion, the nearest on top,
+      // to be entered next.
+      const int firstMet = pendingCount;
+      for (int child = 0; child < kWideBvhWidth; ++child) {
+        if (entries[child] == kInfinity) continue;
+        int slot = pendingCount++;
+        for (; slot > firstMet && pending[slot - 1].entry < entries[child]; --slot)
+          pending[slot] = pending[slot - 1];
+        pending[slot] = {node.offset[child], node.primitiveCount[child], entries[child]};
       }
     }
-    // The next kept box that a hit found since has not put out of reach.
+    // The next kept child that a hit found since has not put out of reach.
     while (pendingCount > 0 && pending[pendingCount - 1].entry > tMax) --pendingCount;
     if (pendingCount == 0) break;
-    current = pending[--pendingCount].node;
+    current = pending[--pendingCount];
   }
   counters.nodesVisited += boxesTested;
 }
@@ -197,8 +212,8 @@ bool Bvh::nearest(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& co
       return shapes_[shape]->intersect(ray, tMin, candidate, counters);
     });
   }
-  traverse(ray, tMin, hit.t, counters, [&](const BvhNode& leaf) {
-    for (std::uint32_t i = leaf.offset; i < leaf.offset + leaf.primitiveCount; ++i) {
+  traverse(ray, tMin, hit.t, counters, [&](std::uint32_t first, std::uint32_t count) {
+    for (std::uint32_t i = first; i < first + count; ++i) {
       found |= nearest.offer(primitives_[i].ref, [&](Hit& candidate) {
         return intersectPrimitive(primitives_[i], ray, tMin, candidate, counters);
       });
@@ -212,8 +227,8 @@ void Bvh::visitCrossings(const Ray& ray, float tMin, float tMax, CrossingVisitor
                          IntersectionCounters& counters) const {
   for (int shape : unbounded_)
     if (crosses(*shapes_[shape], ray, tMin, tMax, counters) && !visitor.crossed(shape)) return;
-  traverse(ray, tMin, tMax, counters, [&](const BvhNode& leaf) {
-    for (std::uint32_t i = leaf.offset; i < leaf.offset + leaf.primitiveCount; ++i) {
+  traverse(ray, tMin, tMax, counters, [&](std::uint32_t first, std::uint32_t count) {
+    for (std::uint32_t i = first; i < first + count; ++i) {
       Hit crossing;
       crossing.t = tMax;
       if (intersectPrimitive(primitives_[i], ray, tMin, crossing, counters) &&

@@ -7,17 +7,20 @@
 //
 // Every primitive of every bounded shape is an entry of its own: each
 // triangle of a mesh, each sphere or box. Unbounded shapes (planes) are
-// tested apart, before the tree. The tree is built by the binned surface area
-// heuristic (bvh_builder.hpp) and stored flat, in an array of 32-byte nodes.
-// The leaves keep the corners of their triangles (Shape::primitiveTriangle)
-// beside them and test those themselves, sparing a call into the mesh and
-// its vertex indices; other primitives are tested by their shapes.
+// tested apart, before the tree. The tree is built binary, by the binned
+// surface area heuristic (bvh_builder.hpp), then collapsed into nodes of four
+// children whose boxes a ray tests at once (wide_bvh.hpp). The leaves keep
+// their triangles (Shape::primitiveTriangle) beside them, as a corner and two
+// edges, and test those themselves, sparing a call into the mesh, its vertex
+// indices and the edges' subtractions; other primitives are tested by their
+// shapes.
 //
-// Traversal goes nearest child first: at an inner node the ray tests both
-// children's boxes (slab test, with the ray's inverse direction computed
-// once), enters the nearer and keeps the farther on a small stack; once a
-// hit nearer than a kept box's entry is found, that box is skipped. A shadow
-// ray stops at the first opaque primitive it meets.
+// Traversal goes nearest child first: at an inner node the ray tests the
+// four children's boxes (slab test, with the ray's inverse direction
+// computed once), enters the nearest it meets and keeps the others on a
+// small stack, farthest deepest; once a hit nearer than a kept box's entry
+// is found, that box is skipped. A shadow ray stops at the first opaque
+// primitive it meets.
 #pragma once
 
 #include <array>
@@ -25,6 +28,7 @@
 
 #include "ray/accelerator.hpp"
 #include "ray/bvh_builder.hpp"
+#include "ray/wide_bvh.hpp"
 
 namespace rise {
 
@@ -33,8 +37,10 @@ class Bvh final : public Accelerator {
   // A primitive as a leaf holds it.
   struct LeafPrimitive {
     PrimitiveRef ref;
-    bool isTriangle;  // tested here, on these corners
-    std::array<Vec3, 3> corners;
+    bool isTriangle;  // tested here, on this corner and these edges
+    Vec3 corner;
+    Vec3 edge1;
+    Vec3 edge2;
   };
 
   // Builds on `threads` threads, 0 meaning one per hardware thread.
@@ -44,13 +50,13 @@ class Bvh final : public Accelerator {
   void visitCrossings(const Ray& ray, float tMin, float tMax, CrossingVisitor& visitor,
                       IntersectionCounters& counters) const override;
 
-  const BvhNodeArray& nodes() const { return nodes_; }
+  std::span<const WideBvhNode> nodes() const { return nodes_; }
   std::span<const LeafPrimitive> primitives() const { return primitives_; }
-  int depth() const { return depth_; }
 
  private:
   // Walks the boxes that the ray meets at t in (tMin, tMax), nearest first,
-  // calling visitLeaf(node) at each leaf until it returns false. tMax may
+  // calling visitLeaf(firstPrimitive, primitiveCount) at each leaf until it
+  // returns false. tMax may
   // shrink as the leaves find hits.
   template <typename VisitLeaf>
   void traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCounters& counters,
@@ -60,9 +66,8 @@ class Bvh final : public Accelerator {
 
   std::vector<const Shape*> shapes_;
   std::vector<int> unbounded_;  // the shapes outside the tree
-  BvhNodeArray nodes_;
+  std::vector<WideBvhNode> nodes_;
   std::vector<LeafPrimitive> primitives_;  // in leaf order
-  int depth_ = 0;
 };
 
 }  // namespace rise

@@ -59,7 +59,7 @@ class Builder {
  public:
   Builder(std::vector<BuildPrimitive>& primitives, int threads)
       : primitives_(primitives),
-        nodes_(2 * std::max<std::size_t>(primitives.size(), 1) + 1),
+        nodes_(2 * std::max<std::size_t>(primitives.size(), 1) - 1),
         spareThreads_(threads - 1) {}
 
   BuiltBvh run() {
@@ -72,7 +72,6 @@ class Builder {
     result.nodes = std::move(nodes_);
     result.primitives.reserve(primitives_.size());
     for (const BuildPrimitive& primitive : primitives_) result.primitives.push_back(primitive.ref);
-    result.depth = depth_;
     return result;
   }
 
@@ -83,7 +82,7 @@ class Builder {
              const Bounds3& box) {
     nodes_[node].box = box;
     const std::uint32_t count = end - begin;
-    if (count == 1 || depth == kMaxBvhDepth) return makeLeaf(node, begin, end, depth);
+    if (count == 1 || depth == kMaxBvhDepth) return makeLeaf(node, begin, end);
 
     const Bounds3 centroids = centroidBounds(begin, end);
     Split split = bestSplit(begin, end, box, centroids);
@@ -101,7 +100,7 @@ class Builder {
       split.leftBox = boxOf(begin, middle);
       split.rightBox = boxOf(middle, end);
     } else {
-      return makeLeaf(node, begin, end, depth);
+      return makeLeaf(node, begin, end);
     }
 
     const std::uint32_t children = nodeCount_.fetch_add(2);
@@ -189,12 +188,9 @@ class Builder {
     return middle;
   }
 
-  void makeLeaf(std::uint32_t node, std::uint32_t begin, std::uint32_t end, int depth) {
+  void makeLeaf(std::uint32_t node, std::uint32_t begin, std::uint32_t end) {
     nodes_[node].offset = begin;
     nodes_[node].primitiveCount = end - begin;
-    int deepest = depth_.load();
-    while (depth > deepest && !depth_.compare_exchange_weak(deepest, depth)) {
-    }
   }
 
   bool takeSpareThread() {
@@ -205,10 +201,9 @@ class Builder {
   }
 
   std::vector<BuildPrimitive>& primitives_;
-  BvhNodeArray nodes_;
-  std::atomic<std::uint32_t> nodeCount_{2};  // the root and its unused partner
+  std::vector<BvhNode> nodes_;
+  std::atomic<std::uint32_t> nodeCount_{1};  // the root
   std::atomic<int> spareThreads_;
-  std::atomic<int> depth_{0};
 };
 
 }  // namespace

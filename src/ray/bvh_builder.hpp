@@ -33,38 +33,14 @@ struct PrimitiveRef {
   std::uint32_t primitive;
 };
 
-// One node of the flattened hierarchy, 32 bytes.
-struct alignas(32) BvhNode {
+// One node of the binary hierarchy: an inner node's children are the nodes
+// offset and offset + 1.
+struct BvhNode {
   Bounds3 box;
   std::uint32_t offset = 0;          // a leaf's first primitive, an inner node's first child
   std::uint32_t primitiveCount = 0;  // 0 for an inner node
 
   bool isLeaf() const { return primitiveCount > 0; }
-};
-static_assert(sizeof(BvhNode) == 32);
-
-// The nodes, two to a 64-byte cache line: the root alone in the first line,
-// then each pair of siblings together, so that the two boxes that traversal
-// tests at an inner node come in one memory fetch. Node 1, the root's
-// partner, is unused; an inner node's children are nodes offset and
-// offset + 1, offset even.
-class BvhNodeArray {
- public:
-  explicit BvhNodeArray(std::size_t slots = 0) : lines_((slots + 1) / 2) {}
-
-  BvhNode& operator[](std::uint32_t index) { return lines_[index / 2].nodes[index % 2]; }
-  const BvhNode& operator[](std::uint32_t index) const {
-    return lines_[index / 2].nodes[index % 2];
-  }
-  std::size_t size() const { return 2 * lines_.size(); }  // counting the unused node 1
-  bool empty() const { return lines_.empty(); }
-  void resize(std::size_t slots) { lines_.resize((slots + 1) / 2); }
-
- private:
-  struct alignas(64) CacheLine {
-    BvhNode nodes[2];
-  };
-  std::vector<CacheLine> lines_;
 };
 
 // A primitive as the builder sees it: its box, whose centre (the centroid)
@@ -81,9 +57,8 @@ struct BuildPrimitive {
 inline constexpr int kMaxBvhDepth = 64;
 
 struct BuiltBvh {
-  BvhNodeArray nodes;                    // the root first; empty when there were no primitives
+  std::vector<BvhNode> nodes;            // the root first; empty when there were no primitives
   std::vector<PrimitiveRef> primitives;  // in leaf order: a leaf's are contiguous
-  int depth = 0;                         // of the deepest leaf, the root being 1
 };
 
 // Builds the hierarchy on up to `threads` threads.

@@ -32,34 +32,50 @@ bool contains(const Bounds3& outer, const Bounds3& inner) {
          glm::all(glm::lessThanEqual(inner.max, outer.max));
 }
 
-// Walks the tree from the root, checking every node against its children
-// and counting how often each primitive appears in a leaf.
-void checkSubtree(const Bvh& bvh, std::uint32_t index, int depth,
-                  const std::vector<std::unique_ptr<Shape>>& shapes,
-                  std::map<std::pair<std::uint32_t, std::uint32_t>, int>& appearances) {
-  ASSERT_LE(depth, bvh.depth());
-  const BvhNode& node = bvh.nodes()[index];
-  if (node.isLeaf()) {
-    EXPECT_LE(node.primitiveCount, 8u) << "a leaf of more primitives than kMaxLeafSize";
-    ASSERT_LE(node.offset + node.primitiveCount, bvh.primitives().size());
-    for (std::uint32_t i = node.offset; i < node.offset + node.primitiveCount; ++i) {
-      const PrimitiveRef& ref = bvh.primitives()[i].ref;
-      ++appearances[{ref.shape, ref.primitive}];
-      EXPECT_TRUE(contains(node.box, shapes[ref.shape]->primitiveBounds(ref.primitive)));
-    }
-    return;
+using Appearances = std::map<std::pair<std::uint32_t, std::uint32_t>, int>;
+
+void checkLeaf(const Bvh& bvh, const Bounds3& box, std::uint32_t first, std::uint32_t count,
+               const std::vector<std::unique_ptr<Shape>>& shapes, Appearances& appearances) {
+  EXPECT_LE(count, 8u) << "a leaf of more primitives than kMaxLeafSize";
+  ASSERT_LE(first + count, bvh.primitives().size());
+  for (std::uint32_t i = first; i < first + count; ++i) {
+    const PrimitiveRef& ref = bvh.primitives()[i].ref;
+    ++appearances[{ref.shape, ref.primitive}];
+    EXPECT_TRUE(contains(box, shapes[ref.shape]->primitiveBounds(ref.primitive)));
   }
-  ASSERT_EQ(node.offset % 2, 0u) << "siblings share a cache line";
-  ASSERT_LT(node.offset + 1, bvh.nodes().size());
-  for (std::uint32_t child : {node.offset, node.offset + 1}) {
-    EXPECT_TRUE(contains(node.box, bvh.nodes()[child].box));
-    checkSubtree(bvh, child, depth + 1, shapes, appearances);
+}
+
+// Walks the tree from the root, checking every node's children against
+// theirs and counting how often each primitive appears in a leaf. Only the
+// root may have fewer than two children (one, a leaf, for a tiny scene),
+// and the filled slots come first.
+void checkSubtree(const Bvh& bvh, std::uint32_t index, int depth,
+                  const std::vector<std::unique_ptr<Shape>>& shapes, Appearances& appearances) {
+  ASSERT_LE(depth, kMaxBvhDepth);
+  ASSERT_LT(index, bvh.nodes().size());
+  const WideBvhNode& node = bvh.nodes()[index];
+  const int children = node.childCount();
+  EXPECT_GE(children, index == 0 ? 1 : 2);
+  for (int child = 0; child < kWideBvhWidth; ++child) {
+    const Bounds3 box = node.childBox(child);
+    if (child >= children) {
+      EXPECT_TRUE(box.isEmpty());
+      continue;
+    }
+    if (node.primitiveCount[child] > 0) {
+      checkLeaf(bvh, box, node.offset[child], node.primitiveCount[child], shapes, appearances);
+      continue;
+    }
+    const WideBvhNode& inner = bvh.nodes()[node.offset[child]];
+    for (int grandchild = 0; grandchild < inner.childCount(); ++grandchild)
+      EXPECT_TRUE(contains(box, inner.childBox(grandchild)));
+    checkSubtree(bvh, node.offset[child], depth + 1, shapes, appearances);
   }
 }
 
 void checkInvariants(const std::vector<std::unique_ptr<Shape>>& shapes, int threads) {
   const Bvh bvh(shapes, threads);
-  std::map<std::pair<std::uint32_t, std::uint32_t>, int> appearances;
+  Appearances appearances;
   checkSubtree(bvh, 0, 1, shapes, appearances);
   int bounded = 0;
   for (std::size_t shape = 0; shape < shapes.size(); ++shape) {

@@ -6,18 +6,17 @@
 
 namespace rise {
 
-// Where the ray meets the triangle v0 v1 v2, if that is at t in (tMin, tMax):
-// writes t and the barycentric coordinates (u, v) of the point
-// (1 - u - v) v0 + u v1 + v v2. Möller and Trumbore, "Fast, Minimum Storage
+// Where the ray meets the triangle v0, v0 + edge1, v0 + edge2, if that is at
+// t in (tMin, tMax): writes t and the barycentric coordinates (u, v) of the
+// point v0 + u edge1 + v edge2. Möller and Trumbore, "Fast, Minimum Storage
 // Ray-Triangle Intersection", Journal of Graphics Tools 2(1), 1997: Cramer's
 // rule on origin + t direction = that point, with the triple products shared.
 // Both sides are hit; the edges belong to the triangle, so that no ray slips
 // between two triangles of a mesh; a ray in the triangle's plane misses it.
 // Inline, because it is the inner loop of every mesh.
-inline bool intersectTriangle(const Ray& ray, const Vec3& v0, const Vec3& v1, const Vec3& v2,
-                              float tMin, float tMax, float& t, Vec2& barycentric) {
-  const Vec3 edge1 = v1 - v0;
-  const Vec3 edge2 = v2 - v0;
+inline bool intersectTriangleEdges(const Ray& ray, const Vec3& v0, const Vec3& edge1,
+                                   const Vec3& edge2, float tMin, float tMax, float& t,
+                                   Vec2& barycentric) {
   const Vec3 p = glm::cross(ray.direction, edge2);
   const float determinant = glm::dot(edge1, p);
   if (determinant == 0.0f) return false;
@@ -34,6 +33,12 @@ inline bool intersectTriangle(const Ray& ray, const Vec3& v0, const Vec3& v1, co
   t = tTriangle;
   barycentric = Vec2(u, v);
   return true;
+}
+
+// The same for the triangle of corners v0 v1 v2: (u, v) weigh v1 and v2.
+inline bool intersectTriangle(const Ray& ray, const Vec3& v0, const Vec3& v1, const Vec3& v2,
+                              float tMin, float tMax, float& t, Vec2& barycentric) {
+  return intersectTriangleEdges(ray, v0, v1 - v0, v2 - v0, tMin, tMax, t, barycentric);
 }
 
 // The unit normal of the triangle v0 v1 v2, on the side from which its

@@ -1,0 +1,104 @@
+#include "ray/wide_bvh.hpp"
+
+#include <algorithm>
+
+namespace rise {
+namespace {
+
+WideBvhNode emptyNode() {
+  WideBvhNode node{};
+  for (int axis = 0; axis < 3; ++axis) {
+    std::fill(std::begin(node.lower[axis]), std::end(node.lower[axis]), kInfinity);
+    std::fill(std::begin(node.upper[axis]), std::end(node.upper[axis]), -kInfinity);
+  }
+  return node;
+}
+
+void setChildBox(WideBvhNode& node, int child, const Bounds3& box) {
+  for (int axis = 0; axis < 3; ++axis) {
+    node.lower[axis][child] = box.min[axis];
+    node.upper[axis][child] = box.max[axis];
+  }
+}
+
+class Collapser {
+ public:
+  explicit Collapser(const std::vector<BvhNode>& binary) : binary_(binary) {}
+
+  std::vector<WideBvhNode> run() {
+    if (binary_.empty()) return {};
+    if (binary_[0].isLeaf()) {
+      addNode({0});
+    } else {
+      collapse(0);
+    }
+    return std::move(wide_);
+  }
+
+ private:
+  // Makes the wide node of the binary inner node `inner`; returns its index.
+  std::uint32_t collapse(std::uint32_t inner) { return addNode(descendantsToKeep(inner)); }
+
+  // The children of the binary inner node, with the inner ones among them
+  // opened into theirs, the largest first, while there is room for both.
+  std::vector<std::uint32_t> descendantsToKeep(std::uint32_t inner) const {
+    std::vector<std::uint32_t> kept{binary_[inner].offset, binary_[inner].offset + 1};
+    while (kept.size() < kWideBvhWidth) {
+      auto largest = kept.end();
+      for (auto child = kept.begin(); child != kept.end(); ++child) {
+        if (binary_[*child].isLeaf()) continue;
+        if (largest == kept.end() ||
+            binary_[*child].box.surfaceArea() > binary_[*largest].box.surfaceArea())
+          largest = child;
+      }
+      if (largest == kept.end()) break;
+      const std::uint32_t firstGrandchild = binary_[*largest].offset;
+      *largest = firstGrandchild;
+      kept.push_back(firstGrandchild + 1);
+    }
+    return kept;
+  }
+
+  std::uint32_t addNode(const std::vector<std::uint32_t>& children) {
+    const auto index = static_cast<std::uint32_t>(wide_.size());
+    wide_.push_back(emptyNode());
+    for (std::size_t slot = 0; slot < children.size(); ++slot) {
+      const BvhNode& child = binary_[children[slot]];
+      const int lane = static_cast<int>(slot);
+      // The node is reached again by its index: collapsing the children
+      // below grows wide_ and may move it.
+      setChildBox(wide_[index], lane, child.box);
+      wide_[index].primitiveCount[lane] = child.primitiveCount;
+      const std::uint32_t offset = child.isLeaf() ? child.offset : collapse(children[slot]);
+      wide_[index].offset[lane] = offset;
+    }
+    return index;
+  }
+
+  const std::vector<BvhNode>& binary_;
+  std::vector<WideBvhNode> wide_;
+};
+
+}  // namespace
+
+int WideBvhNode::childCount() const {
+  int count = 0;
+  for (int child = 0; child < kWideBvhWidth; ++child)
+    if (!childBox(child).isEmpty()) ++count;
+  return count;
+}
+
+Bounds3 WideBvhNode::childBox(int child) const {
+  Bounds3 box;
+  for (int axis = 0; axis < 3; ++axis) {
+    box.min[axis] = lower[axis][child];
+    box.max[axis] = upper[axis][child];
+  }
+  return box;
+}
+
+std::vector<WideBvhNode> collapseBvh(const std::vector<BvhNode>& binary) {
+  return Collapser(binary).run();
+}
+
+}  // namespace rise
