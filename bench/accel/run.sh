@@ -22,25 +22,9 @@ source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 filter="."
 out=out/bench-accel
 build=build
-while (($# > 0)); do
-  case "$1" in
-    --filter | --out)
-      (($# >= 2)) || die "$1 needs a value"
-      case "$1" in
-        --filter) filter="$2" ;;
-        --out) out="$2" ;;
-      esac
-      shift
-      ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    -*) die "unknown option $1 (see --help)" ;;
-    *) build="$1" ;;
-  esac
-  shift
-done
+declare -A value_options=([--filter]=filter [--out]=out)
+declare -A flag_options=()
+parse_options "$@"
 
 here="$(realpath "$(dirname "${BASH_SOURCE[0]}")")"
 enter_repository

@@ -35,28 +35,11 @@ frames=5
 threads=2
 out=out/bench-raster
 build=build
-while (($# > 0)); do
-  case "$1" in
-    --frames | --threads | --out)
-      (($# >= 2)) || die "$1 needs a value"
-      case "$1" in
-        --frames) frames="$2" ;;
-        --threads) threads="$2" ;;
-        --out) out="$2" ;;
-      esac
-      shift
-      ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    -*) die "unknown option $1 (see --help)" ;;
-    *) build="$1" ;;
-  esac
-  shift
-done
-[[ "$frames" =~ ^[1-9][0-9]*$ ]] || die "--frames takes a positive count, not '$frames'"
-[[ "$threads" =~ ^[1-9][0-9]*$ ]] || die "--threads takes a positive count, not '$threads'"
+declare -A value_options=([--frames]=frames [--threads]=threads [--out]=out)
+declare -A flag_options=()
+parse_options "$@"
+require_count --frames "$frames" 1
+require_count --threads "$threads" 1
 
 enter_repository
 [[ -x "$build/rise" ]] || die "no RISE executable at $build/rise (build it, or pass BUILD_DIR)"

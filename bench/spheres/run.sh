@@ -31,28 +31,9 @@ antialias=false
 only=""
 out=out/bench-spheres
 build=build
-while (($# > 0)); do
-  case "$1" in
-    --aa) antialias=true ;;
-    --only)
-      (($# >= 2)) || die "--only needs rise or povray"
-      only="$2"
-      shift
-      ;;
-    --out)
-      (($# >= 2)) || die "--out needs a directory"
-      out="$2"
-      shift
-      ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    -*) die "unknown option $1 (see --help)" ;;
-    *) build="$1" ;;
-  esac
-  shift
-done
+declare -A value_options=([--only]=only [--out]=out)
+declare -A flag_options=([--aa]=antialias)
+parse_options "$@"
 case "$only" in
   "" | rise | povray) ;;
   *) die "--only takes rise or povray, not '$only'" ;;

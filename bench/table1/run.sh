@@ -27,28 +27,11 @@ runs=1
 threads=0
 out=out/bench-table1
 build=build
-while (($# > 0)); do
-  case "$1" in
-    --runs | --threads | --out)
-      (($# >= 2)) || die "$1 needs a value"
-      case "$1" in
-        --runs) runs="$2" ;;
-        --threads) threads="$2" ;;
-        --out) out="$2" ;;
-      esac
-      shift
-      ;;
-    -h | --help)
-      usage
-      exit 0
-      ;;
-    -*) die "unknown option $1 (see --help)" ;;
-    *) build="$1" ;;
-  esac
-  shift
-done
-[[ "$runs" =~ ^[1-9][0-9]*$ ]] || die "--runs takes a positive count, not '$runs'"
-[[ "$threads" =~ ^[0-9]+$ ]] || die "--threads takes a count, not '$threads'"
+declare -A value_options=([--runs]=runs [--threads]=threads [--out]=out)
+declare -A flag_options=()
+parse_options "$@"
+require_count --runs "$runs" 1
+require_count --threads "$threads" 0
 
 # Paths given by the caller are relative to where it stands; the renders run
 # from the repository root, where the scene is.
