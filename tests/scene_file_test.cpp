@@ -259,8 +259,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "typo_key.yaml:8:7: unknown key 'radus' in sphere; did you mean 'radius'?"},
         BadScene{"unknown_key_far.yaml",
                  "unknown_key_far.yaml:4:33: unknown key 'shininess' in material 'red'; expected "
-                 "one of: color, texture, bump, normal_map, ka, kd, ks, n, reflection, "
-                 "transmission, ior, roughness"},
+                 "one of: color, texture, bump, normal_map, ka, kd, ks, ks_texture, n, "
+                 "reflection, transmission, ior, roughness"},
         BadScene{"duplicate_key.yaml",
                  "duplicate_key.yaml:2:52: duplicate key 'position' in camera; a key may appear "
                  "only once"},

@@ -35,20 +35,11 @@
 namespace rise {
 namespace {
 
+using shape_testing::expectUv;
 using shape_testing::intersect;
+using shape_testing::uvSeenAlong;
 
 constexpr float kTolerance = 1e-4f;
-
-Vec2 uvSeenAlong(const Shape& shape, const Vec3& origin, const Vec3& direction) {
-  const auto result = intersect(shape, Ray{origin, direction});
-  EXPECT_TRUE(result.found);
-  return result.surface.uv;
-}
-
-void expectUv(const Vec2& actual, const Vec2& expected) {
-  EXPECT_NEAR(actual.x, expected.x, kTolerance);
-  EXPECT_NEAR(actual.y, expected.y, kTolerance);
-}
 
 // The distance between two u coordinates on a surface that wraps at u = 1.
 float wrappedDistance(float a, float b) {

@@ -30,21 +30,27 @@ SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessell
   if (shading_ == Shading::Gouraud) lightVertices(threads);
 }
 
-Color SurfaceShader::illuminate(const Material& material, const Color& surfaceColor,
-                                const Vec3& position, const Vec3& normal) const {
+Color SurfaceShader::illuminate(const Material& material, const SurfaceColors& colors,
+                                const Vec3& position, const Vec3& surfaceNormal,
+                                const Vec3& shadingNormal) const {
   const Vec3 toViewer = glm::normalize(eye_ - position);
-  Color color = phongAmbient(material, surfaceColor, scene_.ambient);
-  for (const auto& light : scene_.lights)
-    color += phongDirect(material, surfaceColor, normal, toViewer, light->illuminate(position));
+  Color color = phongAmbient(material, colors, scene_.ambient);
+  for (const auto& light : scene_.lights) {
+    const LightSample sample = light->illuminate(position);
+    // A light behind the surface is hidden by it, however far a bump or
+    // normal map tilts the shading normal, as the ray tracer finds.
+    if (glm::dot(surfaceNormal, sample.toLight) <= 0.0f) continue;
+    color += phongDirect(material, colors, shadingNormal, toViewer, sample);
+  }
   return color;
 }
 
-// The model is affine in C: I(C) = C * (I(1) - I(0)) + I(0).
+// The model is linear in C and ks: I(C, ks) = C * I(1, 0) + ks * I(0, 1).
 SurfaceShader::Illumination SurfaceShader::illumination(const Material& material,
                                                         const Vec3& position,
                                                         const Vec3& normal) const {
-  const Color unlit = illuminate(material, Color(0.0f), position, normal);
-  return {illuminate(material, Color(1.0f), position, normal) - unlit, unlit};
+  return {illuminate(material, {Color(1.0f), Color(0.0f)}, position, normal, normal),
+          illuminate(material, {Color(0.0f), Color(1.0f)}, position, normal, normal)};
 }
 
 void SurfaceShader::lightFaces(int threads) {
@@ -118,20 +124,20 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
       weights.x * a.uv + weights.y * b.uv + weights.z * c.uv);
 
   const Material& material = scene_.materials[sceneFace.material];
-  const Color surfaceColor = material.colorOverFootprint(surface, uvFootprint(face, centre));
+  const SurfaceColors colors = material.colorsOverFootprint(surface, uvFootprint(face, centre));
   const int side = sideSeen(screenFace);
   Color color;
   switch (shading_) {
     case Shading::Flat:
-      color = faceLight_[face].with(surfaceColor);
+      color = faceLight_[face].with(colors);
       break;
     case Shading::Gouraud: {
       const std::vector<Illumination>& lit = vertexLight_[side];
       const auto& [ia, ib, ic] = sceneFace.vertices;
       const Illumination interpolated{
           weights.x * lit[ia].byColor + weights.y * lit[ib].byColor + weights.z * lit[ic].byColor,
-          weights.x * lit[ia].added + weights.y * lit[ib].added + weights.z * lit[ic].added};
-      color = interpolated.with(surfaceColor);
+          weights.x * lit[ia].byKs + weights.y * lit[ib].byKs + weights.z * lit[ic].byKs};
+      color = interpolated.with(colors);
       break;
     }
     case Shading::Phong:
@@ -142,7 +148,7 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
                          surface.dpdv);
         surface.shadingNormal = material.shadingNormalAt(surface);
       }
-      color = illuminate(material, surfaceColor, surface.position,
+      color = illuminate(material, colors, surface.position, towardsEye(surface.normal, side),
                          towardsEye(surface.shadingNormal, side));
       break;
   }

@@ -15,10 +15,11 @@
 // Interpolation is perspective-correct, by the face's barycentric
 // coordinates at the pixel's centre in the world (ScreenFace). A texture's
 // colour C is looked up at every pixel whatever the shading, over the
-// pixel's footprint in the texture (for mipmapping): flat and Gouraud
-// keep apart the part of the model that C multiplies (ambient and diffuse)
-// and the part it does not (the highlight), as OpenGL's separate specular
-// colour does, and combine them with C at the pixel.
+// pixel's footprint in the texture (for mipmapping), and so is a ks
+// texture's ks: flat and Gouraud keep apart the part of the model that C
+// multiplies (ambient and diffuse) and the part that ks multiplies (the
+// highlight), as OpenGL's separate specular colour does, and combine them
+// with C and ks at the pixel.
 //
 // What the ray tracer adds to the model is left out: there are no shadows
 // (every light reaches every surface facing it), and no mirror reflection or
@@ -54,17 +55,22 @@ class SurfaceShader {
   ShadedPixel shade(int face, const Vec2& centre) const;
 
  private:
-  // The model's light at a point as C * byColor + added.
+  // The model's light at a point as C * byColor + ks * byKs.
   struct Illumination {
     Color byColor{0.0f};
-    Color added{0.0f};
+    Color byKs{0.0f};
 
-    Color with(const Color& surfaceColor) const { return surfaceColor * byColor + added; }
+    Color with(const SurfaceColors& colors) const {
+      return colors.color * byColor + colors.ks * byKs;
+    }
   };
 
   PixelFootprint uvFootprint(int face, const Vec2& centre) const;
-  Color illuminate(const Material& material, const Color& surfaceColor, const Vec3& position,
-                   const Vec3& normal) const;
+  // The model's light at a point of the surface whose own normal there is
+  // `surfaceNormal`, shaded with `shadingNormal` (tilted by a bump or
+  // normal map), both on the side the eye sees.
+  Color illuminate(const Material& material, const SurfaceColors& colors, const Vec3& position,
+                   const Vec3& surfaceNormal, const Vec3& shadingNormal) const;
   Illumination illumination(const Material& material, const Vec3& position,
                             const Vec3& normal) const;
   void lightFaces(int threads);

@@ -78,9 +78,9 @@ Color RecursiveTracer::trace(const Ray& ray, int depth, PathSampler& paths,
 
 Color RecursiveTracer::shade(const ShadingFrame& frame, const Material& material, int depth,
                              PathSampler& paths, TraceCounters& counters) const {
-  const Color surfaceColor = material.colorAt(frame.surface);
-  Color color = phongAmbient(material, surfaceColor, scene_.ambient) +
-                directLight(frame, material, surfaceColor, depth, paths, counters);
+  const SurfaceColors colors = material.colorsAt(frame.surface);
+  Color color = phongAmbient(material, colors, scene_.ambient) +
+                directLight(frame, material, colors, depth, paths, counters);
   if (depth >= maxDepth_) return color;
   if (material.reflection > 0.0f)
     color += material.reflection * reflected(frame, material, depth, paths, counters);
@@ -92,7 +92,7 @@ Color RecursiveTracer::shade(const ShadingFrame& frame, const Material& material
 
 // The Phong terms of every light that a shadow ray reaches.
 Color RecursiveTracer::directLight(const ShadingFrame& frame, const Material& material,
-                                   const Color& surfaceColor, int depth, PathSampler& paths,
+                                   const SurfaceColors& colors, int depth, PathSampler& paths,
                                    TraceCounters& counters) const {
   Color color(0.0f);
   for (const auto& light : scene_.lights) {
@@ -102,8 +102,7 @@ Color RecursiveTracer::directLight(const ShadingFrame& frame, const Material& ma
     const Color visible = intersector_.transmittance(spawnRay(frame, sample.toLight), 0.0f,
                                                      sample.distance, counters.intersections);
     if (visible == Color(0.0f)) continue;
-    color +=
-        visible * phongDirect(material, surfaceColor, frame.shadingNormal, frame.toViewer, sample);
+    color += visible * phongDirect(material, colors, frame.shadingNormal, frame.toViewer, sample);
   }
   return color;
 }

@@ -57,8 +57,9 @@ class RecursiveTracer {
   Color trace(const Ray& ray, int depth, PathSampler& paths, TraceCounters& counters) const;
   Color shade(const ShadingFrame& frame, const Material& material, int depth, PathSampler& paths,
               TraceCounters& counters) const;
-  Color directLight(const ShadingFrame& frame, const Material& material, const Color& surfaceColor,
-                    int depth, PathSampler& paths, TraceCounters& counters) const;
+  Color directLight(const ShadingFrame& frame, const Material& material,
+                    const SurfaceColors& colors, int depth, PathSampler& paths,
+                    TraceCounters& counters) const;
   Color reflected(const ShadingFrame& frame, const Material& material, int depth,
                   PathSampler& paths, TraceCounters& counters) const;
   Color refracted(const ShadingFrame& frame, const Material& material, int depth,

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <memory>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <string>
 #include <system_error>
@@ -18,12 +19,15 @@
 
 #include "core/image_io.hpp"
 #include "scene/image_texture.hpp"
+#include "scene/mapping_reader.hpp"
 #include "scene/mesh_file.hpp"
+#include "scene/mesh_mapping.hpp"
 #include "scene/shapes/box.hpp"
 #include "scene/shapes/cone.hpp"
 #include "scene/shapes/convex_polygon.hpp"
 #include "scene/shapes/cylinder.hpp"
 #include "scene/shapes/keyframed_mesh.hpp"
+#include "scene/shapes/mapped_shape.hpp"
 #include "scene/shapes/moving_shape.hpp"
 #include "scene/shapes/plane.hpp"
 #include "scene/shapes/sphere.hpp"
@@ -77,9 +81,9 @@ SamplePattern readPattern(const Field& field) {
 }
 
 FilterKind readFilter(const Field& field) {
-  return readChoice<FilterKind>(field, {{"box", FilterKind::Box},
-                                        {"tent", FilterKind::Tent},
-                                        {"gaussian", FilterKind::Gaussian}});
+  return readChoice<FilterKind>(
+      field,
+      {{"box", FilterKind::Box}, {"tent", FilterKind::Tent}, {"gaussian", FilterKind::Gaussian}});
 }
 
 PixelSampling readSampling(const CheckedMap& image, const Field& imageField) {
@@ -93,15 +97,18 @@ PixelSampling readSampling(const CheckedMap& image, const Field& imageField) {
   readIfPresent(image, "filter", sampling.filter, readFilter);
   readIfPresent(image, "adaptive_threshold", sampling.adaptiveThreshold, readPositive);
   if (const std::string problem = samplingProblem(sampling); !problem.empty())
-    failAt((samplesField ? *samplesField : patternField ? *patternField : imageField).mark,
+    failAt((samplesField   ? *samplesField
+            : patternField ? *patternField
+                           : imageField)
+               .mark,
            "image has " + problem);
   return sampling;
 }
 
 ImageSpec readImage(const Field& field) {
-  const CheckedMap image(field, "image",
-                         {"width", "height", "background", "samples", "pattern", "filter",
-                          "adaptive_threshold"});
+  const CheckedMap image(
+      field, "image",
+      {"width", "height", "background", "samples", "pattern", "filter", "adaptive_threshold"});
   ImageSpec spec;
   readIfPresent(image, "width", spec.width, readPositiveWholeNumber);
   readIfPresent(image, "height", spec.height, readPositiveWholeNumber);
@@ -122,8 +129,9 @@ void checkUpIsAcrossView(const Camera& camera, const std::optional<Field>& up,
 }
 
 Camera readCamera(const Field& field) {
-  const CheckedMap map(field, "camera",
-                       {"position", "look_at", "up", "fov", "aperture", "focal_distance", "shutter"});
+  const CheckedMap map(
+      field, "camera",
+      {"position", "look_at", "up", "fov", "aperture", "focal_distance", "shutter"});
   Camera camera;
   camera.position = readVec3(map.required("position"));
   const Field lookAt = map.required("look_at");
@@ -185,30 +193,35 @@ struct LightKind {
 
 const std::vector<LightKind>& lightKinds() {
   static const std::vector<LightKind> kinds{
-      {"point", {"position"},
+      {"point",
+       {"position"},
        [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
          return std::make_unique<PointLight>(readVec3(light.required("position")), color);
        }},
-      {"directional", {"direction"},
+      {"directional",
+       {"direction"},
        [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
          return std::make_unique<DirectionalLight>(readDirection(light.required("direction")),
                                                    color);
        }},
-      {"rect", {"corner", "edge1", "edge2"},
+      {"rect",
+       {"corner", "edge1", "edge2"},
        [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
          const Vec3 corner = readVec3(light.required("corner"));
          const Vec3 edge1 = readDirection(light.required("edge1"));
          return std::make_unique<RectLight>(corner, edge1, readDirection(light.required("edge2")),
                                             color);
        }},
-      {"disk", {"center", "normal", "radius"},
+      {"disk",
+       {"center", "normal", "radius"},
        [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
          const Vec3 center = readVec3(light.required("center"));
          const Vec3 normal = readDirection(light.required("normal"));
-         return std::make_unique<DiskLight>(center, normal,
-                                            readPositive(light.required("radius")), color);
+         return std::make_unique<DiskLight>(center, normal, readPositive(light.required("radius")),
+                                            color);
        }},
-      {"sphere", {"center", "radius"},
+      {"sphere",
+       {"center", "radius"},
        [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
          const Vec3 center = readVec3(light.required("center"));
          return std::make_unique<SphereLight>(center, readPositive(light.required("radius")),
@@ -233,10 +246,9 @@ std::unique_ptr<Light> readLight(const Field& item) {
 
 Material readMaterial(const MapEntry& entry, const std::filesystem::path& sceneDirectory) {
   const std::string name = "material '" + entry.key + "'";
-  const CheckedMap map(
-      makeField(entry.value, name, entry.keyMark), name,
-      {"color", "texture", "bump", "normal_map", "ka", "kd", "ks", "n", "reflection",
-       "transmission", "ior", "roughness"});
+  const CheckedMap map(makeField(entry.value, name, entry.keyMark), name,
+                       {"color", "texture", "bump", "normal_map", "ka", "kd", "ks", "ks_texture",
+                        "n", "reflection", "transmission", "ior", "roughness"});
   Material material;
   material.name = entry.key;
   readIfPresent(map, "color", material.color, readColor);
@@ -249,6 +261,8 @@ Material readMaterial(const MapEntry& entry, const std::filesystem::path& sceneD
   readIfPresent(map, "ka", material.ka, readNonNegative);
   readIfPresent(map, "kd", material.kd, readNonNegative);
   readIfPresent(map, "ks", material.ks, readNonNegative);
+  if (const std::optional<Field> ksTexture = map.optional("ks_texture"))
+    material.ksTexture = readTexture(*ksTexture, sceneDirectory, Encoding::Linear);
   readIfPresent(map, "n", material.n, readNonNegative);
   readIfPresent(map, "reflection", material.reflection, readNonNegative);
   readIfPresent(map, "transmission", material.transmission, readNonNegative);
@@ -310,9 +324,10 @@ std::vector<Vec3> readPoints(const Field& field, std::string_view expectation,
 }
 
 // Each shape reader builds its shape from its properties. Shapes made of
-// vertices take the object's transform into them; the others are built in
-// their own space and wrapped in a TransformedShape. Files that a shape names
-// are found from the scene file's folder.
+// vertices take the object's transform into them (but for a triangle or
+// polygon with a mapping, which it wears in its own space); the others are
+// built in their own space and wrapped in a TransformedShape. Files that a
+// shape names are found from the scene file's folder.
 using ShapeReader = std::unique_ptr<Shape> (*)(const CheckedMap& properties, int material,
                                                const Mat4& worldFromObject,
                                                const std::filesystem::path& sceneDirectory);
@@ -394,18 +409,30 @@ void appendFan(const Field& face, int vertexCount, std::vector<std::array<int, 3
     triangles.push_back({indices[0], indices[i], indices[i + 1]});
 }
 
+// The poses of a mesh (one, or two keyframes), read in its own space, take
+// the object's `mapping` there, so that the texture moves with the mesh, and
+// then its transform.
+void mapAndPlace(const CheckedMap& mesh, std::span<MeshGeometry> poses,
+                 const Mat4& worldFromObject) {
+  if (const std::optional<Field> field = mesh.optional("mapping")) {
+    if (const std::optional<Mapping> mapping = readMapping(*field)) applyMapping(*mapping, poses);
+  }
+  for (MeshGeometry& pose : poses) pose = transformed(std::move(pose), worldFromObject);
+}
+
 // "mesh: {vertices: [[x, y, z], ...], faces: [[0, 1, 2], ...]}".
 std::unique_ptr<Shape> readInlineMesh(const CheckedMap& mesh, int material,
                                       const Mat4& worldFromObject) {
-  std::vector<Vec3> vertices =
-      readPoints(mesh.required("vertices"), "a list of 3 or more points [x, y, z]", 3, SIZE_MAX,
-                 worldFromObject);
+  std::vector<Vec3> vertices = readPoints(
+      mesh.required("vertices"), "a list of 3 or more points [x, y, z]", 3, SIZE_MAX, Mat4(1.0f));
   const Field faces = mesh.required("faces");
   std::vector<std::array<int, 3>> triangles;
   for (const Field& face : readList(
            faces, "a list of faces, each a list of 3 or more vertex indices", "a face of mesh", 1))
     appendFan(face, static_cast<int>(vertices.size()), triangles);
-  return std::make_unique<TriangleMesh>(std::move(vertices), std::move(triangles), material);
+  std::array poses{MeshGeometry{std::move(vertices), {}, {}, std::move(triangles)}};
+  mapAndPlace(mesh, poses, worldFromObject);
+  return std::make_unique<TriangleMesh>(std::move(poses[0]), material);
 }
 
 void checkKeyframesExist(const std::vector<Field>& fields, const std::vector<int>& keyframes,
@@ -447,12 +474,13 @@ std::unique_ptr<Shape> readMeshFile(const CheckedMap& mesh, const Field& file, i
       checkKeyframesExist(keyframeFields, keyframes, md2KeyframeCount(path), fileName);
     if (keyframes.size() == 2) {
       auto [start, end] = loadMd2Keyframes(path, keyframes[0], keyframes[1]);
-      return std::make_unique<KeyframedMesh>(transformed(std::move(start), worldFromObject),
-                                             transformed(std::move(end), worldFromObject),
-                                             material);
+      std::array poses{std::move(start), std::move(end)};
+      mapAndPlace(mesh, poses, worldFromObject);
+      return std::make_unique<KeyframedMesh>(std::move(poses[0]), std::move(poses[1]), material);
     }
-    MeshGeometry model = loadMeshFile(path, keyframes.empty() ? 0 : keyframes[0]);
-    return std::make_unique<TriangleMesh>(transformed(std::move(model), worldFromObject), material);
+    std::array poses{loadMeshFile(path, keyframes.empty() ? 0 : keyframes[0])};
+    mapAndPlace(mesh, poses, worldFromObject);
+    return std::make_unique<TriangleMesh>(std::move(poses[0]), material);
   } catch (const MeshFileError& error) {
     failAt(file.mark, "cannot load mesh '" + fileName + "': " + error.what());
   }
@@ -517,13 +545,16 @@ struct ShapeKind {
 const std::vector<ShapeKind>& shapeKinds() {
   static const std::vector<ShapeKind> kinds{
       {"plane", {"point", "normal"}, false, readPlane},
-      {"sphere", {"center", "radius"}, false, readSphere},
-      {"box", {"min", "max"}, false, readBox},
-      {"cylinder", {"base", "axis", "radius", "height"}, false, readAxialShape<Cylinder>},
-      {"cone", {"base", "axis", "radius", "height"}, false, readAxialShape<Cone>},
-      {"triangle", {"vertices"}, true, readTriangle},
-      {"polygon", {"vertices"}, true, readPolygon},
-      {"mesh", {"vertices", "faces", "file", "frame", "frames"}, true, readMesh},
+      {"sphere", {"center", "radius", "mapping"}, false, readSphere},
+      {"box", {"min", "max", "mapping"}, false, readBox},
+      {"cylinder",
+       {"base", "axis", "radius", "height", "mapping"},
+       false,
+       readAxialShape<Cylinder>},
+      {"cone", {"base", "axis", "radius", "height", "mapping"}, false, readAxialShape<Cone>},
+      {"triangle", {"vertices", "mapping"}, true, readTriangle},
+      {"polygon", {"vertices", "mapping"}, true, readPolygon},
+      {"mesh", {"vertices", "faces", "file", "frame", "frames", "mapping"}, true, readMesh},
   };
   return kinds;
 }
@@ -544,16 +575,26 @@ std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& mate
   TransformSpec transform;
   if (const std::optional<Field> field = properties.optional("transform"))
     transform = readPlacement(*field, "the transform of " + kind.name, TransformSpec{});
+  // A mesh takes its mapping into its vertices as it loads (mapAndPlace);
+  // another shape wears it in its own space, inside its placement.
+  std::optional<Mapping> mapping;
+  if (const std::optional<Field> field = properties.optional("mapping");
+      field && kind.name != "mesh")
+    mapping = readMapping(*field);
+  const auto readInOwnSpace = [&] {
+    std::unique_ptr<Shape> shape = kind.read(properties, material, Mat4(1.0f), sceneDirectory);
+    if (!mapping) return shape;
+    return std::unique_ptr<Shape>(std::make_unique<MappedShape>(std::move(shape), *mapping));
+  };
   if (const std::optional<Field> field = properties.optional("motion")) {
     const TransformSpec close = readPlacement(*field, "the motion of " + kind.name, transform);
-    return std::make_unique<MovingShape>(
-        kind.read(properties, material, Mat4(1.0f), sceneDirectory), transform, close);
+    return std::make_unique<MovingShape>(readInOwnSpace(), transform, close);
   }
 
   const Mat4 toWorld = worldFromObject(transform);
-  if (kind.takesTransformIntoVertices)
+  if (kind.takesTransformIntoVertices && !mapping)
     return kind.read(properties, material, toWorld, sceneDirectory);
-  std::unique_ptr<Shape> shape = kind.read(properties, material, Mat4(1.0f), sceneDirectory);
+  std::unique_ptr<Shape> shape = readInOwnSpace();
   if (transform.isIdentity()) return shape;
   return std::make_unique<TransformedShape>(std::move(shape), toWorld);
 }

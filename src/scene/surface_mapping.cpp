@@ -86,4 +86,31 @@ void cubeFaceTangents(const Vec3& faceNormal, const Vec3& min, const Vec3& max, 
   dpdv *= glm::dot(size, glm::abs(dpdv));
 }
 
+Vec3 cubeFaceFacing(const Vec3& normal) {
+  const Vec3 size = glm::abs(normal);
+  const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+  Vec3 face(0.0f);
+  face[axis] = normal[axis] < 0.0f ? -1.0f : 1.0f;
+  return face;
+}
+
+void projectedTangents(const Vec3& normal, const Vec3& alongU, const Vec3& alongV, Vec3& dpdu,
+                       Vec3& dpdv) {
+  dpdu = dpdv = Vec3(0.0f);
+  const float lengthU = glm::dot(alongU, alongU), lengthV = glm::dot(alongV, alongV);
+  if (lengthU == 0.0f || lengthV == 0.0f) return;
+  // The gradients of u and of v (perpendicular tangents: each along its own,
+  // at the inverse rate), restricted to the tangent plane.
+  const Vec3 gradientU = alongU / lengthU - (glm::dot(alongU, normal) / lengthU) * normal;
+  const Vec3 gradientV = alongV / lengthV - (glm::dot(alongV, normal) / lengthV) * normal;
+  // dP/du is the direction in the plane across gradientV along which u
+  // grows at 1 per unit; dP/dv likewise: the dual basis of the gradients.
+  const float determinant = glm::dot(normal, glm::cross(gradientU, gradientV));
+  if (std::abs(determinant) <=
+      1e-6f * std::sqrt(glm::dot(gradientU, gradientU) * glm::dot(gradientV, gradientV)))
+    return;
+  dpdu = glm::cross(gradientV, normal) / determinant;
+  dpdv = glm::cross(normal, gradientU) / determinant;
+}
+
 }  // namespace rise

@@ -68,4 +68,17 @@ Vec2 cubeFaceUv(const Vec3& position, const Vec3& faceNormal, const Vec3& min, c
 void cubeFaceTangents(const Vec3& faceNormal, const Vec3& min, const Vec3& max, Vec3& dpdu,
                       Vec3& dpdv);
 
+// The face of an axis-aligned box that a surface of this normal faces most:
+// the signed unit axis of the normal's largest component.
+Vec3 cubeFaceFacing(const Vec3& normal);
+
+// dP/du and dP/dv along a surface of unit normal `normal` onto which a
+// mapping is projected from another surface (a sphere, a cylinder, a plane),
+// given that surface's own dP/du and dP/dv (`alongU`, `alongV`, perpendicular
+// to each other): the directions in the tangent plane in which u alone and
+// v alone grow, at their rates. Zero where the surface runs along the
+// projection, so that u and v do not vary apart over it.
+void projectedTangents(const Vec3& normal, const Vec3& alongU, const Vec3& alongV, Vec3& dpdu,
+                       Vec3& dpdv);
+
 }  // namespace rise

@@ -109,7 +109,8 @@ std::shared_ptr<const BumpMap> readBump(const Field& field,
 }
 
 std::shared_ptr<const Texture> readTexture(const Field& field,
-                                           const std::filesystem::path& sceneDirectory) {
+                                           const std::filesystem::path& sceneDirectory,
+                                           Encoding encoding) {
   std::vector<std::string> kinds{"image", "checker"};
   for (const auto& [name, pattern] : kNoisePatterns) kinds.push_back(name);
   std::vector<std::string> keys = kinds;
@@ -126,8 +127,7 @@ std::shared_ptr<const Texture> readTexture(const Field& field,
   if (given.size() != 1)
     failAt(map.mark(), "texture needs exactly one of " + joinedWithCommas(kinds) + "; got " +
                            (given.empty() ? "none" : joinedWithCommas(givenKinds)));
-  if (givenKinds[0] == "image")
-    return readImageTexture(map, given[0], sceneDirectory, Encoding::Srgb);
+  if (givenKinds[0] == "image") return readImageTexture(map, given[0], sceneDirectory, encoding);
   for (const std::string_view key : {"filter", "scale", "offset", "rotate"}) {
     if (const std::optional<Field> misplaced = map.optional(key))
       failAt(misplaced->mark,

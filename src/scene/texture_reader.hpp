@@ -1,18 +1,19 @@
 // The `texture` of a material in a scene file:
 //
-//   texture: {image: textures/map.png, filter: bilinear, scale: [2, 1], offset: [0.5, 0], rotate:
-//   90} texture: {checker: {colors: [[1, 1, 1], [0, 0, 0]], size: 0.5}} texture: {marble: {colors:
-//   [[0.9, 0.9, 0.85], [0.3, 0.3, 0.35]], scale: 2}}
+//   texture: {image: textures/map.png, filter: bilinear, scale: [2, 1], rotate: 90}
+//   texture: {checker: {colors: [[1, 1, 1], [0, 0, 0]], size: 0.5}}
+//   texture: {marble: {colors: [[0.9, 0.9, 0.85], [0.3, 0.3, 0.35]], scale: 2}}
 //
 // An image (its path relative to the scene file's folder) lies over the
-// shape's natural texture coordinates, moved by scale, rotate and offset;
-// checker squares alternate in the same coordinates; perlin, marble and wood
-// are solid textures of the position.
+// shape's texture coordinates (its own, or its object's `mapping`), moved by
+// scale, rotate and offset; checker squares alternate in the same
+// coordinates; perlin, marble and wood are solid textures of the position.
 #pragma once
 
 #include <filesystem>
 #include <memory>
 
+#include "core/image_io.hpp"
 #include "scene/bump_map.hpp"
 #include "scene/normal_map.hpp"
 #include "scene/texture.hpp"
@@ -20,8 +21,11 @@
 
 namespace rise {
 
+// An image's texels are decoded by `encoding`: sRGB for colours, linear for
+// data such as a ks texture's factors.
 std::shared_ptr<const Texture> readTexture(const Field& field,
-                                           const std::filesystem::path& sceneDirectory);
+                                           const std::filesystem::path& sceneDirectory,
+                                           Encoding encoding = Encoding::Srgb);
 
 // The `bump` of a material: "bump: {map: <a texture, as above>, strength: 0.05}",
 // the height being the map's brightness times strength (scene units; 1 by

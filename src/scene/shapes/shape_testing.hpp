@@ -29,6 +29,19 @@ inline Intersection intersect(const Shape& shape, const Ray& ray, float tMin = 0
   return result;
 }
 
+// The texture coordinates where a ray from `origin` along `direction` meets
+// the shape, which it must.
+inline Vec2 uvSeenAlong(const Shape& shape, const Vec3& origin, const Vec3& direction) {
+  const Intersection result = intersect(shape, Ray{origin, direction});
+  EXPECT_TRUE(result.found);
+  return result.surface.uv;
+}
+
+inline void expectUv(const Vec2& actual, const Vec2& expected, float tolerance = 1e-4f) {
+  EXPECT_NEAR(actual.x, expected.x, tolerance);
+  EXPECT_NEAR(actual.y, expected.y, tolerance);
+}
+
 inline std::string text(const Vec3& v) {
   std::ostringstream out;
   out << "(" << v.x << ", " << v.y << ", " << v.z << ")";

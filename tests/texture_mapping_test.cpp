@@ -1,0 +1,478 @@
+// Projected texture mappings (scene/projected_mapping.hpp): each puts a known
+// place of the texture at a known place of the object, computed in the
+// object's own space so that the texture moves with it; the tessellations
+// carry the same coordinates without smearing the texture across the seam;
+// the ray tracer and the visible-surface algorithms draw it at the same
+// place; and the scene file's `mapping` key, with its errors.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "core/image_io.hpp"
+#include "raster/raster_testing.hpp"
+#include "scene/image_texture.hpp"
+#include "scene/mesh_mapping.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_error.hpp"
+#include "scene/scene_file.hpp"
+#include "scene/shapes/box.hpp"
+#include "scene/shapes/cylinder.hpp"
+#include "scene/shapes/mapped_shape.hpp"
+#include "scene/shapes/shape_testing.hpp"
+#include "scene/shapes/sphere.hpp"
+#include "scene/surface_mapping.hpp"
+
+namespace rise {
+namespace {
+
+using shape_testing::expectUv;
+using shape_testing::intersect;
+using shape_testing::uvSeenAlong;
+
+constexpr float kTolerance = 1e-4f;
+
+// The fraction of a turn around y from +x towards -z (the u of a sphere)
+// and the latitude from the south pole (its v), of a direction.
+Vec2 longitudeAndLatitude(const Vec3& direction) {
+  const float turn = std::atan2(-direction.z, direction.x) / (2.0f * kPi);
+  const float latitude = std::asin(direction.y / glm::length(direction));
+  return {turn < 0.0f ? turn + 1.0f : turn, 0.5f + latitude / kPi};
+}
+
+std::unique_ptr<Shape> mapped(std::unique_ptr<Shape> shape, Projection projection,
+                              const Vec3& axis = Vec3(0, 1, 0)) {
+  return std::make_unique<MappedShape>(std::move(shape), Mapping{projection, axis});
+}
+
+TEST(ProjectedMapping, SphericalIsTheLongitudeAndLatitudeFromTheBoxsCentre) {
+  // The box's centre is (1, 1, 1).
+  const auto box = mapped(std::make_unique<Box>(Vec3(0.0f), Vec3(2.0f), 0), Projection::Spherical);
+  expectUv(uvSeenAlong(*box, Vec3(1.5f, 1.5f, -5), Vec3(0, 0, 1)),
+           longitudeAndLatitude(Vec3(0.5f, 0.5f, -1.0f)));
+  expectUv(uvSeenAlong(*box, Vec3(1.0f, 9.0f, 1.5f), Vec3(0, -1, 0)),
+           longitudeAndLatitude(Vec3(0.0f, 1.0f, 0.5f)));
+  expectUv(uvSeenAlong(*box, Vec3(-5, 0.25f, 0.5f), Vec3(1, 0, 0)),
+           longitudeAndLatitude(Vec3(-1.0f, -0.75f, -0.5f)));
+}
+
+TEST(ProjectedMapping, SphericalOnASphereIsTheSpheresOwnMapping) {
+  const Sphere sphere(Vec3(1, 2, 3), 2.0f, 0);
+  const auto mappedSphere =
+      mapped(std::make_unique<Sphere>(Vec3(1, 2, 3), 2.0f, 0), Projection::Spherical);
+  for (const Vec3& direction : {Vec3(0, 0, 1), Vec3(-1, 0.3f, 0.2f), Vec3(0.4f, -1, -0.3f)}) {
+    const Vec3 origin = Vec3(1, 2, 3) - 5.0f * direction + Vec3(0.3f, 0.2f, 0.1f);
+    expectUv(uvSeenAlong(*mappedSphere, origin, direction), uvSeenAlong(sphere, origin, direction));
+  }
+}
+
+TEST(ProjectedMapping, CylindricalTurnsAroundTheAxisAndRisesAlongTheBox) {
+  // The box's centre is (0, 2, 0); it rises from y = 0 to 4.
+  const auto box =
+      mapped(std::make_unique<Box>(Vec3(-1, 0, -1), Vec3(1, 4, 1), 0), Projection::Cylindrical);
+  expectUv(uvSeenAlong(*box, Vec3(0.5f, 1, -5), Vec3(0, 0, 1)),
+           {longitudeAndLatitude(Vec3(0.5f, 0, -1)).x, 0.25f});
+  expectUv(uvSeenAlong(*box, Vec3(-5, 3.5f, 0.25f), Vec3(1, 0, 0)),
+           {longitudeAndLatitude(Vec3(-1, 0, 0.25f)).x, 0.875f});
+  // About z: v from the back of the box (z = -1) to its front, and a
+  // quarter turn counter-clockwise, seen from the axis's tip, from +x to +y.
+  const auto turned = mapped(std::make_unique<Box>(Vec3(-1, 0, -1), Vec3(1, 4, 1), 0),
+                             Projection::Cylindrical, Vec3(0, 0, 1));
+  const Vec2 towardsX = uvSeenAlong(*turned, Vec3(5, 2, 0.5f), Vec3(-1, 0, 0));
+  const Vec2 towardsY = uvSeenAlong(*turned, Vec3(0, 9, 0.5f), Vec3(0, -1, 0));
+  EXPECT_NEAR(towardsX.y, 0.75f, kTolerance);
+  EXPECT_NEAR(std::fmod(towardsY.x - towardsX.x + 1.0f, 1.0f), 0.25f, kTolerance);
+}
+
+TEST(ProjectedMapping, PlanarProjectsAlongZOntoTheBoxSeenFromTheFront) {
+  // The sphere's box is [-1, 1]^3; seen from -z, u grows to the right (-x).
+  const auto sphere = mapped(std::make_unique<Sphere>(Vec3(0.0f), 1.0f, 0), Projection::Planar);
+  expectUv(uvSeenAlong(*sphere, Vec3(0.5f, 0.25f, -5), Vec3(0, 0, 1)), {0.25f, 0.625f});
+  // Through to the back, the same coordinates.
+  expectUv(uvSeenAlong(*sphere, Vec3(0.5f, 0.25f, 5), Vec3(0, 0, -1)), {0.25f, 0.625f});
+}
+
+TEST(ProjectedMapping, BoxProjectsFromTheFaceTheSurfaceFacesMost) {
+  const auto sphere = mapped(std::make_unique<Sphere>(Vec3(0.0f), 1.0f, 0), Projection::Box);
+  // Facing +x: seen from +x, u grows to the right (-z), v up.
+  expectUv(uvSeenAlong(*sphere, Vec3(5, 0.3f, 0.2f), Vec3(-1, 0, 0)), {0.4f, 0.65f});
+  // Facing +y: u along x, v along -z.
+  expectUv(uvSeenAlong(*sphere, Vec3(0.2f, 5, 0.3f), Vec3(0, -1, 0)), {0.6f, 0.35f});
+  // On a box, the box's own mapping.
+  const Box box(Vec3(0.0f), Vec3(2.0f, 1.0f, 4.0f), 0);
+  const auto mappedBox =
+      mapped(std::make_unique<Box>(Vec3(0.0f), Vec3(2.0f, 1.0f, 4.0f), 0), Projection::Box);
+  for (const Ray& ray :
+       {Ray{Vec3(0.5f, 0.75f, -5), Vec3(0, 0, 1)}, Ray{Vec3(7, 0.25f, 1), Vec3(-1, 0, 0)},
+        Ray{Vec3(1.5f, 3, 1), Vec3(0, -1, 0)}})
+    expectUv(uvSeenAlong(*mappedBox, ray.origin, ray.direction),
+             uvSeenAlong(box, ray.origin, ray.direction));
+}
+
+// dP/du and dP/dv are the rates of change of the position with the mapping's
+// coordinates along the surface: a step along dP/du (back onto the surface)
+// moves u alone.
+void expectTangentsMatchTheMapping(const Shape& shape, const Vec3& origin, const Vec3& direction) {
+  const auto at = intersect(shape, Ray{origin, direction});
+  ASSERT_TRUE(at.found);
+  const float step = 1e-3f;
+  for (int axis = 0; axis < 2; ++axis) {
+    const Vec3 tangent = axis == 0 ? at.surface.dpdu : at.surface.dpdv;
+    const auto there = intersect(
+        shape,
+        Ray{at.surface.position + step * tangent + 0.1f * at.surface.normal, -at.surface.normal});
+    ASSERT_TRUE(there.found);
+    const Vec2 change = (there.surface.uv - at.surface.uv) / step;
+    EXPECT_NEAR(change[axis], 1.0f, 2e-2f) << "axis " << axis;
+    EXPECT_NEAR(change[1 - axis], 0.0f, 2e-2f) << "axis " << axis;
+  }
+}
+
+TEST(ProjectedMapping, TangentsAreTheDerivativesOfTheMappingAlongTheSurface) {
+  for (const Projection projection :
+       {Projection::Spherical, Projection::Cylindrical, Projection::Planar, Projection::Box}) {
+    SCOPED_TRACE(static_cast<int>(projection));
+    expectTangentsMatchTheMapping(
+        *mapped(std::make_unique<Box>(Vec3(0.0f), Vec3(2, 3, 2), 0), projection),
+        Vec3(1.3f, 1.8f, -5), Vec3(0, 0, 1));
+    expectTangentsMatchTheMapping(
+        *mapped(std::make_unique<Sphere>(Vec3(0.0f), 1.0f, 0), projection), Vec3(0.3f, 0.4f, -5),
+        glm::normalize(Vec3(0.1f, 0, 1)));
+  }
+}
+
+Tessellation tessellationOf(const Shape& shape) {
+  Tessellation out;
+  TessellationSettings settings;
+  settings.level = 4;
+  shape.tessellate(settings, out);
+  return out;
+}
+
+float uSpan(const Tessellation& tessellation, const std::array<int, 3>& triangle) {
+  float low = kInfinity, high = -kInfinity;
+  for (int corner : triangle) {
+    low = std::min(low, tessellation.vertices[corner].uv.x);
+    high = std::max(high, tessellation.vertices[corner].uv.x);
+  }
+  return high - low;
+}
+
+TEST(ProjectedMapping, TessellationHasTheRayTracersCoordinatesWithoutASmearAtTheSeam) {
+  const auto box = mapped(std::make_unique<Box>(Vec3(-1.0f), Vec3(1.0f), 0), Projection::Spherical);
+  const Tessellation tessellation = tessellationOf(*box);
+  for (const SurfaceVertex& vertex : tessellation.vertices) {
+    // Away from the box's edges, where a ray along the normal finds the face.
+    const Vec3 out = glm::abs(vertex.position);
+    if ((out.x > 0.95f) + (out.y > 0.95f) + (out.z > 0.95f) > 1) continue;
+    const auto hit = intersect(*box, Ray{vertex.position + vertex.normal, -vertex.normal});
+    ASSERT_TRUE(hit.found);
+    const float uDifference = std::abs(hit.surface.uv.x - vertex.uv.x);
+    const bool onTheAxis = std::abs(vertex.position.x) + std::abs(vertex.position.z) < 1e-4f;
+    if (!onTheAxis) {
+      EXPECT_NEAR(std::min(uDifference, std::abs(uDifference - 1.0f)), 0.0f, 1e-4f);
+    }
+    EXPECT_NEAR(hit.surface.uv.y, vertex.uv.y, 1e-4f);
+  }
+  // The seam runs down the middle of the +x face: the triangles across it
+  // take u beyond 1 rather than spanning the whole texture backwards.
+  int acrossTheSeam = 0;
+  for (const auto& triangle : tessellation.triangles) {
+    float nearestToTheAxis = kInfinity;
+    for (int corner : triangle) {
+      const Vec3& p = tessellation.vertices[corner].position;
+      nearestToTheAxis = std::min(nearestToTheAxis, std::hypot(p.x, p.z));
+    }
+    // Near the poles u turns fast; elsewhere a piece spans a small part of a turn.
+    if (nearestToTheAxis > 0.5f) {
+      EXPECT_LT(uSpan(tessellation, triangle), 0.2f);
+    }
+    for (int corner : triangle) acrossTheSeam += tessellation.vertices[corner].uv.x > 1.0f;
+  }
+  EXPECT_GT(acrossTheSeam, 0);
+}
+
+TEST(ProjectedMapping, CylinderTessellationIsRefinedAndKeepsItsEdgesShared) {
+  const auto cylinder = mapped(std::make_unique<Cylinder>(Vec3(0.0f), Vec3(0, 1, 0), 0.5f, 4.0f, 0),
+                               Projection::Cylindrical);
+  const Tessellation tessellation = tessellationOf(*cylinder);
+  EXPECT_TRUE(tessellation.enclosesSolid);
+  for (const auto& triangle : tessellation.triangles) {
+    const SurfaceVertex& a = tessellation.vertices[triangle[0]];
+    if (std::abs(a.normal.y) > 0.5f) continue;  // a cap, where u turns around its centre
+    EXPECT_LT(uSpan(tessellation, triangle), 1.01f / 16.0f);
+  }
+}
+
+// A scene of one object, lit by ambient light alone so that the image is the
+// texture: an image of 8 x 4 texels, each its own colour, read nearest.
+class MappedScene : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    directory_ =
+        std::filesystem::temp_directory_path() /
+        ("rise-mapping-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+         "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(directory_);
+    Image texels(8, 4);
+    for (int y = 0; y < 4; ++y)
+      for (int x = 0; x < 8; ++x)
+        texels.at(x, y) = Color(static_cast<float>(x) / 7.0f, static_cast<float>(y) / 3.0f,
+                                static_cast<float>((x + y) % 2));
+    writeImage(texels, directory_ / "texels.png");
+    texels_ = readTextureImage(directory_ / "texels.png");
+  }
+  void TearDown() override { std::filesystem::remove_all(directory_); }
+
+  // The object seen from `eye`, looking at `target`, in an odd-sized image
+  // whose middle pixel looks straight at the target.
+  Scene load(const std::string& object, const Vec3& eye, const Vec3& target) {
+    const std::filesystem::path path = directory_ / "scene.yaml";
+    std::ofstream(path) << "image: {width: 65, height: 49}\ncamera: {position: [" << eye.x << ", "
+                        << eye.y << ", " << eye.z << "], look_at: [" << target.x << ", " << target.y
+                        << ", " << target.z
+                        << "], fov: 40}\nambient: [1, 1, 1]\n"
+                           "materials:\n  texels: {ka: 1, kd: 0, texture: {image: texels.png, "
+                           "filter: nearest}}\nobjects:\n  - "
+                        << object << "\n";
+    return loadSceneFile(path);
+  }
+
+  // The texel whose centre is at `uv`, which each algorithm should see at
+  // the middle pixel, and the pixels where the visible-surface algorithms see
+  // another colour than the ray tracer.
+  void expectTexelInTheMiddle(const Scene& scene, const Vec2& uv) {
+    const int column = static_cast<int>(std::floor(uv.x * 8.0f));
+    const int row = static_cast<int>(std::floor((1.0f - uv.y) * 4.0f));
+    ASSERT_NEAR(uv.x * 8.0f, static_cast<float>(column) + 0.5f, 1e-3f) << "not a texel's centre";
+    ASSERT_NEAR((1.0f - uv.y) * 4.0f, static_cast<float>(row) + 0.5f, 1e-3f);
+    const Color expected = texels_.at(column, row);
+    const RenderSettings settings = raster_testing::settingsFor(scene);
+    const Image rays = raster_testing::render("ray-tracing", scene, settings).image;
+    const int x = settings.width / 2, y = settings.height / 2;
+    EXPECT_LT(glm::length(rays.at(x, y) - expected), 1e-3f) << "ray-tracing";
+    for (std::string_view algorithm : raster_testing::kAlgorithms) {
+      const Image drawn = raster_testing::render(algorithm, scene, settings).image;
+      EXPECT_LT(glm::length(drawn.at(x, y) - expected), 1e-3f) << algorithm;
+      int differing = 0;
+      for (int py = 0; py < rays.height(); ++py)
+        for (int px = 0; px < rays.width(); ++px)
+          differing += glm::length(rays.at(px, py) - drawn.at(px, py)) > 1e-3f ? 1 : 0;
+      // Pixel centres near a texel's edge may fall to either side, and a
+      // box mapping's faces meet along the triangles' edges.
+      EXPECT_LE(differing, rays.width() * rays.height() / 100) << algorithm;
+    }
+  }
+
+  std::filesystem::path directory_;
+  Image texels_;
+};
+
+// The direction from a turning mapping's centre at which u and v are those
+// given, for y up.
+Vec3 directionAt(const Vec2& uv, bool cylindrical) {
+  const float turn = 2.0f * kPi * uv.x;
+  const float up = cylindrical ? 0.0f : (uv.y - 0.5f) * kPi;
+  return {std::cos(up) * std::cos(turn), std::sin(up), -std::cos(up) * std::sin(turn)};
+}
+
+TEST_F(MappedScene, SphericalPutsTheTexelAtItsLongitudeAndLatitude) {
+  // Column 2, row 1: u = 2.5 / 8, v = 1 - 1.5 / 4.
+  const Vec2 uv(2.5f / 8.0f, 0.625f);
+  const Vec3 centre(0, 1, 0);
+  expectTexelInTheMiddle(
+      load("box: {min: [-1, 0, -1], max: [1, 2, 1], material: texels, mapping: spherical}",
+           centre + 6.0f * directionAt(uv, false), centre),
+      uv);
+}
+
+TEST_F(MappedScene, SphericalMovesWithTheObject) {
+  // Turned a quarter about y and moved: the object's +x side, where u = 0,
+  // faces -z, and the texel at u = 0.5 / 8 lies a little to its right.
+  const Vec2 uv(0.5f / 8.0f, 0.625f);
+  const Vec3 local = directionAt(uv, false);
+  const Vec3 world(local.z, local.y, -local.x);  // turned a quarter about y
+  const Vec3 centre(3, 1, 2);
+  expectTexelInTheMiddle(
+      load("box: {min: [-1, -1, -1], max: [1, 1, 1], material: texels, mapping: spherical, "
+           "transform: {rotate: [0, 90, 0], translate: [3, 1, 2]}}",
+           centre + 6.0f * world, centre),
+      uv);
+}
+
+TEST_F(MappedScene, CylindricalPutsTheTexelAtItsTurnAndHeight) {
+  // Column 5, row 2: u = 5.5 / 8, v = 1 - 2.5 / 4, a quarter of the way up.
+  const Vec2 uv(5.5f / 8.0f, 0.375f);
+  expectTexelInTheMiddle(
+      load("cylinder: {base: [0, 0, 0], axis: [0, 1, 0], radius: 1, height: 4, material: "
+           "texels, mapping: cylindrical}",
+           Vec3(0, 1.5f, 0) + 6.0f * directionAt(uv, true),
+           Vec3(0, 1.5f, 0) + directionAt(uv, true)),
+      uv);
+}
+
+TEST_F(MappedScene, PlanarPutsTheTexelOnTheFront) {
+  // Column 6, row 3: u = 6.5 / 8 to the right seen from -z, v = 0.5 / 4.
+  const Vec2 uv(6.5f / 8.0f, 0.125f);
+  const Vec3 onTheBox(1.0f - 2.0f * uv.x, -1.0f + 2.0f * uv.y, -0.5f);
+  expectTexelInTheMiddle(
+      load("sphere: {center: [0, 0, 0], radius: 1, material: texels, mapping: planar}",
+           onTheBox + Vec3(0, 0, -6), onTheBox),
+      uv);
+}
+
+TEST_F(MappedScene, BoxPutsTheTexelOnTheFaceTheSurfaceFaces) {
+  // Near the top, facing +y: u along x, v along -z; column 3, row 1.
+  const Vec2 uv(3.5f / 8.0f, 0.625f);
+  const Vec3 onTheTop(-1.0f + 2.0f * uv.x, 1.0f, 1.0f - 2.0f * uv.y);
+  expectTexelInTheMiddle(
+      load("sphere: {center: [0, 0, 0], radius: 1, material: texels, mapping: box}",
+           onTheTop + Vec3(0.5f, 6, -1), onTheTop),
+      uv);
+}
+
+TEST_F(MappedScene, AMeshTakesTheMappingAsItLoadsWithoutASmearAtTheSeam) {
+  // A cube of eight shared corners, in the spherical mapping: the seam runs
+  // down the middle of its +x face.
+  const Vec2 uv(7.5f / 8.0f, 0.625f);
+  const Vec3 centre(0.0f);
+  const Scene scene = load(
+      "mesh: {vertices: [[-1, -1, -1], [1, -1, -1], [1, 1, -1], [-1, 1, -1], [-1, -1, 1], "
+      "[1, -1, 1], [1, 1, 1], [-1, 1, 1]], faces: [[0, 3, 2, 1], [4, 5, 6, 7], [0, 4, 7, "
+      "3], [1, 2, 6, 5], [3, 7, 6, 2], [0, 1, 5, 4]], material: texels, mapping: spherical}",
+      centre + 6.0f * directionAt(uv, false), centre);
+  Tessellation tessellation;
+  scene.shapes[0]->tessellate(TessellationSettings{}, tessellation);
+  // Each side spans a quarter turn; the top and bottom, around the poles,
+  // turn all the way.
+  for (const auto& triangle : tessellation.triangles) {
+    const Vec3 normal = tessellation.vertices[triangle[0]].normal;
+    if (normal.y == 0.0f) {
+      EXPECT_LE(uSpan(tessellation, triangle), 0.25f + 1e-5f);
+    }
+  }
+  // On the seam, u is 1 (or 0) and v a half.
+  expectUv(uvSeenAlong(*scene.shapes[0], Vec3(5, 0, 0), Vec3(-1, 0, 0)), {1.0f, 0.5f});
+  expectTexelInTheMiddle(scene, uv);
+}
+
+// A cube of eight shared corners, its faces wound counter-clockwise seen
+// from outside.
+MeshGeometry cube() {
+  MeshGeometry mesh;
+  for (int corner = 0; corner < 8; ++corner)
+    mesh.positions.push_back(Bounds3{Vec3(-1.0f), Vec3(1.0f)}.corner(corner));
+  // Corner k has x from bit 0, y from bit 1, z from bit 2.
+  for (const std::array<int, 4> face :
+       {std::array{0, 2, 3, 1}, std::array{4, 5, 7, 6}, std::array{0, 4, 6, 2},
+        std::array{1, 3, 7, 5}, std::array{2, 6, 7, 3}, std::array{0, 1, 5, 4}}) {
+    mesh.triangles.push_back({face[0], face[1], face[2]});
+    mesh.triangles.push_back({face[0], face[2], face[3]});
+  }
+  return mesh;
+}
+
+TEST(MeshMapping, SplitsEachCornerOfACubeIntoOneVertexPerFace) {
+  std::array poses{cube(), cube()};
+  for (Vec3& position : poses[1].positions) position += Vec3(5, 0, 0);
+  applyMapping(Mapping{Projection::Box}, poses);
+  // A corner keeps one vertex for the faces that give it the same
+  // coordinates, and gets another for each that does not.
+  ASSERT_GT(poses[0].positions.size(), 8u);
+  ASSERT_EQ(poses[0].uvs.size(), poses[0].positions.size());
+  const Bounds3 box{Vec3(-1.0f), Vec3(1.0f)};
+  for (const auto& triangle : poses[0].triangles) {
+    const Vec3 face = cubeFaceFacing(
+        glm::cross(poses[0].positions[triangle[1]] - poses[0].positions[triangle[0]],
+                   poses[0].positions[triangle[2]] - poses[0].positions[triangle[0]]));
+    for (int corner : triangle)
+      expectUv(poses[0].uvs[corner],
+               cubeFaceUv(poses[0].positions[corner], face, box.min, box.max));
+  }
+  // The later pose keeps the first's coordinates and triangles, moved.
+  EXPECT_EQ(poses[1].uvs, poses[0].uvs);
+  EXPECT_EQ(poses[1].triangles, poses[0].triangles);
+  for (std::size_t vertex = 0; vertex < poses[0].positions.size(); ++vertex)
+    EXPECT_EQ(poses[1].positions[vertex], poses[0].positions[vertex] + Vec3(5, 0, 0));
+}
+
+TEST(TextureExamples, LoadWithTheirMapsAndMappings) {
+  const std::filesystem::path examples = std::filesystem::path(RISE_SOURCE_DIR) / "examples";
+  const Scene globe = loadSceneFile(examples / "globe.yaml");
+  ASSERT_EQ(globe.shapes.size(), 7u);
+  EXPECT_TRUE(globe.materials[0].ksTexture);
+  // The cube mapped spherically: its +y face's middle is the north pole.
+  const Bounds3 cube = globe.shapes[3]->bounds();
+  const Vec3 top(cube.centre().x, cube.max.y + 1.0f, cube.centre().z);
+  EXPECT_NEAR(uvSeenAlong(*globe.shapes[3], top, Vec3(0, -1, 0)).y, 1.0f, kTolerance);
+  EXPECT_TRUE(loadSceneFile(examples / "normal-map.yaml").materials[2].normalMap);
+  EXPECT_EQ(loadSceneFile(examples / "textures.yaml").shapes.size(), 5u);
+}
+
+std::string errorLoading(const std::string& object) {
+  try {
+    loadScene(
+        "camera: {position: [0, 0, -5], look_at: [0, 0, 0]}\nmaterials: {m: {}}\nobjects:\n"
+        "  - " +
+            object + "\n",
+        "test.yaml");
+  } catch (const SceneError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+TEST(MappingSceneFile, NamesAnUnknownMappingAndTheAcceptedOnes) {
+  EXPECT_EQ(errorLoading("box: {min: [0, 0, 0], max: [1, 1, 1], material: m, mapping: cubic}"),
+            "test.yaml:4:65: 'mapping' in box is 'cubic'; expected one of: uv, spherical, "
+            "cylindrical, planar, box");
+  EXPECT_EQ(errorLoading("sphere: {center: [0, 0, 0], radius: 1, material: m, mapping: spherica}"),
+            "test.yaml:4:66: 'mapping' in sphere is 'spherica'; did you mean 'spherical'?");
+  EXPECT_EQ(errorLoading("mesh: {vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces: [[0, 1, 2]], "
+                         "material: m, mapping: [uv]}"),
+            "test.yaml:4:99: 'mapping' in mesh is ['uv']; expected a name");
+}
+
+TEST(MappingSceneFile, TakesAnAxisOnlyForTheTurningMappings) {
+  EXPECT_EQ(errorLoading("box: {min: [0, 0, 0], max: [1, 1, 1], material: m, mapping: {planar: "
+                         "{axis: [0, 0, 1]}}}"),
+            "test.yaml:4:66: the planar mapping takes no axis; expected 'mapping: planar', or an "
+            "axis for spherical or cylindrical");
+  EXPECT_EQ(errorLoading("box: {min: [0, 0, 0], max: [1, 1, 1], material: m, mapping: {cylindric: "
+                         "{axis: [0, 0, 1]}}}"),
+            "test.yaml:4:66: unknown mapping 'cylindric' in 'mapping' in box; did you mean "
+            "'cylindrical'?");
+  EXPECT_EQ(errorLoading("box: {min: [0, 0, 0], max: [1, 1, 1], material: m, mapping: "
+                         "{cylindrical: {axes: [0, 0, 1]}}}"),
+            "test.yaml:4:80: unknown key 'axes' in the cylindrical mapping; did you mean 'axis'?");
+  EXPECT_EQ(errorLoading("box: {min: [0, 0, 0], max: [1, 1, 1], material: m, mapping: "
+                         "{cylindrical: {axis: [0, 0, 0]}}}"),
+            "test.yaml:4:86: 'axis' in the cylindrical mapping is [0, 0, 0]; expected a "
+            "direction, not the zero vector");
+}
+
+TEST(MappingSceneFile, APlaneTakesNoMapping) {
+  EXPECT_EQ(errorLoading("plane: {point: [0, 0, 0], normal: [0, 1, 0], material: m, mapping: box}"),
+            "test.yaml:4:63: unknown key 'mapping' in plane; expected one of: point, normal, "
+            "material, transform, motion");
+}
+
+TEST(MappingSceneFile, UvIsTheShapesOwnMapping) {
+  const Scene scene = loadScene(
+      "camera: {position: [0, 0, -5], look_at: [0, 0, 0]}\nmaterials: {m: {}}\nobjects:\n"
+      "  - sphere: {center: [0, 0, 0], radius: 1, material: m, mapping: uv}\n"
+      "  - sphere: {center: [0, 0, 0], radius: 1, material: m, mapping: {spherical: {axis: [0, 0, "
+      "1]}}}\n",
+      "test.yaml");
+  const Sphere sphere(Vec3(0.0f), 1.0f, 0);
+  expectUv(uvSeenAlong(*scene.shapes[0], Vec3(0.3f, 0.2f, -5), Vec3(0, 0, 1)),
+           uvSeenAlong(sphere, Vec3(0.3f, 0.2f, -5), Vec3(0, 0, 1)));
+  // About z, the point facing -z is the south pole.
+  EXPECT_NEAR(uvSeenAlong(*scene.shapes[1], Vec3(0, 0, -5), Vec3(0, 0, 1)).y, 0.0f, kTolerance);
+}
+
+}  // namespace
+}  // namespace rise
