@@ -55,11 +55,7 @@ Mapping readTurningMapping(const Field& field) {
 
 std::optional<Mapping> readMapping(const Field& field) {
   if (field.node.IsMap()) return readTurningMapping(field);
-  const std::string name = readName(field);
-  const std::vector<std::string> names = mappingNames();
-  if (std::find(names.begin(), names.end(), name) == names.end())
-    failAt(field.mark, field.name + " is '" + name + "'; " + suggestAlternative(name, names));
-  const std::optional<Projection> projection = projectionNamed(name);
+  const std::optional<Projection> projection = readChoice(field, kMappings);
   if (!projection) return std::nullopt;
   return Mapping{*projection};
 }

@@ -34,12 +34,9 @@ std::pair<Color, Color> readTwoColors(const CheckedMap& map, const std::string& 
 }
 
 TextureFilter readTextureFilter(const Field& field) {
-  const std::string name = readName(field);
-  if (name == "nearest") return TextureFilter::Nearest;
-  if (name == "bilinear") return TextureFilter::Bilinear;
-  if (name == "trilinear") return TextureFilter::Trilinear;
-  failAt(field.mark, field.name + " is '" + name + "'; " +
-                         suggestAlternative(name, {"nearest", "bilinear", "trilinear"}));
+  return readChoice<TextureFilter>(field, {{"nearest", TextureFilter::Nearest},
+                                           {"bilinear", TextureFilter::Bilinear},
+                                           {"trilinear", TextureFilter::Trilinear}});
 }
 
 std::shared_ptr<const Texture> readImageTexture(const CheckedMap& map, const Field& image,

@@ -210,6 +210,10 @@ std::string readName(const Field& field) {
   return field.node.Scalar();
 }
 
+float readNonNegative(const Field& field) { return readNumber(field, Bound::NonNegative); }
+float readPositive(const Field& field) { return readNumber(field, Bound::Positive); }
+int readPositiveWholeNumber(const Field& field) { return readWholeNumber(field, Bound::Positive); }
+
 std::vector<Field> readList(const Field& field, std::string_view expectation, std::string itemName,
                             std::size_t minItems, std::size_t maxItems) {
   if (!field.node.IsSequence() || field.node.size() < minItems || field.node.size() > maxItems)
@@ -217,6 +221,15 @@ std::vector<Field> readList(const Field& field, std::string_view expectation, st
   std::vector<Field> items;
   for (const YAML::Node& item : field.node) items.push_back(makeField(item, itemName, field.mark));
   return items;
+}
+
+std::vector<Vec3> readPoints(const Field& field, std::string_view expectation,
+                             std::size_t minPoints, std::size_t maxPoints) {
+  std::vector<Vec3> points;
+  for (const Field& point :
+       readList(field, expectation, "a point of " + field.name, minPoints, maxPoints))
+    points.push_back(readVec3(point));
+  return points;
 }
 
 std::vector<MapEntry> readMap(const Field& field, std::string_view expectation,
@@ -262,6 +275,19 @@ std::optional<Field> CheckedMap::optional(std::string_view key) const {
       return makeField(entry.value, quoted(key) + " in " + name_, entry.keyMark);
   }
   return std::nullopt;
+}
+
+MapEntry readKindAndProperties(const Field& item, std::string_view kindWord,
+                               const std::vector<std::string>& kinds) {
+  const std::string expectation = "a map with one key naming the " + std::string(kindWord) + " (" +
+                                  joinedWithCommas(kinds) +
+                                  ") and its properties indented under it";
+  if (!item.node.IsMap() || item.node.size() != 1) failExpected(item, expectation);
+  const MapEntry entry = readMap(item, expectation, item.name).front();
+  if (std::find(kinds.begin(), kinds.end(), entry.key) == kinds.end())
+    failAt(entry.keyMark, "unknown " + std::string(kindWord) + " '" + entry.key + "'; " +
+                              suggestAlternative(entry.key, kinds));
+  return entry;
 }
 
 }  // namespace rise

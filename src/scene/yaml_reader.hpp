@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/color.hpp"
@@ -66,11 +67,32 @@ Vec3 readVec3(const Field& field);
 Vec3 readDirection(const Field& field);  // a Vec3 that is not zero
 Color readColor(const Field& field);     // three numbers >= 0
 std::string readName(const Field& field);
+float readNonNegative(const Field& field);
+float readPositive(const Field& field);
+int readPositiveWholeNumber(const Field& field);
+
+// One of a fixed set of names, with a suggestion for a misspelt one.
+template <typename Choice>
+Choice readChoice(const Field& field, const std::vector<std::pair<std::string, Choice>>& choices) {
+  const std::string name = readName(field);
+  std::vector<std::string> names;
+  for (const auto& [choiceName, choice] : choices) {
+    if (choiceName == name) return choice;
+    names.push_back(choiceName);
+  }
+  failAt(field.mark, field.name + " is '" + name + "'; " + suggestAlternative(name, names));
+}
 
 // The items of a list of minItems to maxItems items, each named `itemName`.
 std::vector<Field> readList(const Field& field, std::string_view expectation, std::string itemName,
                             std::size_t minItems = 0,
                             std::size_t maxItems = std::numeric_limits<std::size_t>::max());
+
+// The points [x, y, z] of a list of minPoints to maxPoints, each named
+// "a point of <the list's name>".
+std::vector<Vec3> readPoints(const Field& field, std::string_view expectation,
+                             std::size_t minPoints,
+                             std::size_t maxPoints = std::numeric_limits<std::size_t>::max());
 
 // The entries of a map in document order; keys must be plain values and
 // appear once in it. Messages call the map `mapName`.
@@ -99,5 +121,17 @@ class CheckedMap {
   YAML::Mark mark_;
   std::vector<MapEntry> entries_;
 };
+
+// Reads `key` into `value` when the map has it, keeping the default otherwise.
+template <typename T, typename Read>
+void readIfPresent(const CheckedMap& map, std::string_view key, T& value, Read read) {
+  if (const std::optional<Field> field = map.optional(key)) value = read(*field);
+}
+
+// An item of a list that names its kind by its one key, with its properties
+// under it: "- sphere: {center: [0, 0, 0], radius: 1}". `kindWord` is what
+// messages call the kinds ("shape", "light type").
+MapEntry readKindAndProperties(const Field& item, std::string_view kindWord,
+                               const std::vector<std::string>& kinds);
 
 }  // namespace rise
