@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/color.hpp"
 #include "scene/shape.hpp"
 
 namespace rise::shape_testing {
@@ -56,6 +57,10 @@ inline ::testing::AssertionResult nearlyEqual(const Vec3& actual, const Vec3& ex
     return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure()
          << text(actual) << " is not within " << tolerance << " of " << text(expected);
+}
+
+inline void expectColor(const Color& actual, const Color& expected, float tolerance = 1e-4f) {
+  EXPECT_TRUE(nearlyEqual(actual, expected, tolerance));
 }
 
 // A hit at t, with the given point and unit normal.
