@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/image_io.hpp"
+#include "core/temporary_folder_testing.hpp"
 
 namespace rise {
 namespace {
@@ -36,20 +37,9 @@ std::string example(const std::string& name) {
   return std::string(RISE_SOURCE_DIR) + "/examples/" + name;
 }
 
-class RiseCommand : public ::testing::Test {
+class RiseCommand : public TemporaryFolderTest {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("rise-cli-" +
-                  std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   fs::path file(const std::string& name) const { return directory_ / name; }
-
-  fs::path directory_;
 };
 
 TEST_F(RiseCommand, RendersTheClassicSceneWithStatsAndBuffers) {

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "core/temporary_folder_testing.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/shapes/keyframed_mesh.hpp"
 #include "scene/shapes/shape_testing.hpp"
@@ -52,18 +53,8 @@ Vec3 faceNormal(const MeshGeometry& mesh, const std::array<int, 3>& triangle) {
                        mesh.positions[triangle[2]]);
 }
 
-// A fresh folder for the files a test writes.
-class MeshFiles : public ::testing::Test {
+class MeshFiles : public TemporaryFolderTest {
  protected:
-  void SetUp() override {
-    directory_ = fs::temp_directory_path() /
-                 ("rise-mesh-" +
-                  std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(directory_);
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   fs::path write(const std::string& name, const std::string& contents) const {
     std::ofstream(directory_ / name, std::ios::binary) << contents;
     return directory_ / name;
@@ -83,8 +74,6 @@ class MeshFiles : public ::testing::Test {
     for (char& c : contents) c = static_cast<char>(generator() & 0xff);
     return write(name, contents);
   }
-
-  fs::path directory_;
 };
 
 struct ModelCount {

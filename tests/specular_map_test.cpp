@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/image_io.hpp"
+#include "core/temporary_folder_testing.hpp"
 #include "raster/raster_testing.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_file.hpp"
@@ -83,22 +84,18 @@ TEST(SpecularMap, BlackKillsTheHighlightAndWhiteKeepsItInEveryAlgorithm) {
   }
 }
 
-TEST(SpecularMap, ReadsAnImageLinearly) {
-  const std::filesystem::path directory =
-      std::filesystem::temp_directory_path() /
-      ("rise-specular-map-test-" +
-       std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-  std::filesystem::create_directories(directory);
+using SpecularMapFile = TemporaryFolderTest;
+
+TEST_F(SpecularMapFile, ReadsAnImageLinearly) {
   // Stored as 128 of 255: linearly about a half, where sRGB would decode it
   // to 0.2159.
   Image grey(2, 2, Color(128.0f / 255.0f));
-  writeImage(grey, directory / "grey.png", Encoding::Linear);
-  std::ofstream(directory / "scene.yaml")
+  writeImage(grey, directory_ / "grey.png", Encoding::Linear);
+  std::ofstream(directory_ / "scene.yaml")
       << "camera: {position: [0, 0, -5], look_at: [0, 0, 0]}\n"
          "materials:\n  half: {ks: 0.6, ks_texture: {image: grey.png}}\n"
          "objects:\n  - sphere: {center: [0, 0, 0], radius: 1, material: half}\n";
-  const Scene scene = loadSceneFile(directory / "scene.yaml");
-  std::filesystem::remove_all(directory);
+  const Scene scene = loadSceneFile(directory_ / "scene.yaml");
   const SurfacePoint point(Vec3(0, 0, -1), Vec3(0, 0, -1), Vec2(0.3f, 0.6f));
   const Color ks = scene.materials[0].colorsAt(point).ks;
   EXPECT_NEAR(ks.r, 0.6f * 128.0f / 255.0f, 1e-5f);

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "core/image_io.hpp"
+#include "core/temporary_folder_testing.hpp"
 #include "raster/raster_testing.hpp"
 #include "scene/image_texture.hpp"
 #include "scene/mesh_mapping.hpp"
@@ -209,14 +210,10 @@ TEST(ProjectedMapping, CylinderTessellationIsRefinedAndKeepsItsEdgesShared) {
 
 // A scene of one object, lit by ambient light alone so that the image is the
 // texture: an image of 8 x 4 texels, each its own colour, read nearest.
-class MappedScene : public ::testing::Test {
+class MappedScene : public TemporaryFolderTest {
  protected:
   void SetUp() override {
-    directory_ =
-        std::filesystem::temp_directory_path() /
-        ("rise-mapping-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-         "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(directory_);
+    TemporaryFolderTest::SetUp();
     Image texels(8, 4);
     for (int y = 0; y < 4; ++y)
       for (int x = 0; x < 8; ++x)
@@ -267,7 +264,6 @@ class MappedScene : public ::testing::Test {
     }
   }
 
-  std::filesystem::path directory_;
   Image texels_;
 };
 

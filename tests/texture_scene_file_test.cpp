@@ -11,6 +11,7 @@
 
 #include "core/image_io.hpp"
 #include "core/pcx_file.hpp"
+#include "core/temporary_folder_testing.hpp"
 #include "raster/raster_testing.hpp"
 #include "scene/image_texture.hpp"
 #include "scene/normal_map.hpp"
@@ -28,17 +29,13 @@ using shape_testing::expectColor;
 const std::filesystem::path kSydney =
     std::filesystem::path(RISE_SOURCE_DIR) / "examples/models/sydney";
 
-class TextureSceneFile : public ::testing::Test {
+class TextureSceneFile : public TemporaryFolderTest {
  protected:
   void SetUp() override {
-    directory_ =
-        std::filesystem::temp_directory_path() /
-        ("rise-texture-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-         "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    TemporaryFolderTest::SetUp();
     std::filesystem::create_directories(directory_ / "textures");
     writeImage(Image(4, 2, Color(1.0f, 0.0f, 0.0f)), directory_ / "textures/red.png");
   }
-  void TearDown() override { std::filesystem::remove_all(directory_); }
 
   Scene load(const std::string& texture) {
     const std::filesystem::path path = directory_ / "scene.yaml";
@@ -59,8 +56,6 @@ class TextureSceneFile : public ::testing::Test {
     }
     return "no error";
   }
-
-  std::filesystem::path directory_;
 };
 
 TEST_F(TextureSceneFile, ReadsAnImageRelativeToTheSceneFile) {

@@ -6,7 +6,6 @@
 #include <ImfInputFile.h>
 #include <gtest/gtest.h>
 #include <stb_image.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,22 +14,15 @@
 #include <string>
 #include <vector>
 
+#include "core/temporary_folder_testing.hpp"
+
 namespace rise {
 namespace {
 
 namespace fs = std::filesystem;
 
-// Each test writes into a fresh directory of its own, removed afterwards.
-class ImageIoTest : public ::testing::Test {
+class ImageIoTest : public TemporaryFolderTest {
  protected:
-  void SetUp() override {
-    static int testsStarted = 0;
-    directory_ = fs::temp_directory_path() / ("rise-image-io-" + std::to_string(getpid()) + "-" +
-                                              std::to_string(testsStarted++));
-    fs::create_directories(directory_);
-  }
-  void TearDown() override { fs::remove_all(directory_); }
-
   std::vector<std::string> filesInDirectory() const {
     std::vector<std::string> names;
     for (const fs::directory_entry& entry : fs::directory_iterator(directory_))
@@ -38,8 +30,6 @@ class ImageIoTest : public ::testing::Test {
     std::sort(names.begin(), names.end());
     return names;
   }
-
-  fs::path directory_;
 };
 
 std::string fileContents(const fs::path& path) {
