@@ -98,12 +98,13 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
                    "Visible-surface algorithms: keep the back faces of solids");
   command
       .add_option("--tessellation", options.tessellation,
-                  "Visible-surface algorithms: a circle becomes 4 x N segments (default 8)")
+                  "Visible-surface algorithms: a circle becomes 4 x N segments")
+      ->capture_default_str()
       ->check(CLI::Range(1, 256));
   command
       .add_option("--plane-size", options.planeSize,
-                  "Visible-surface algorithms: the side of the square drawn for a plane "
-                  "(default 1000)")
+                  "Visible-surface algorithms: the side of the square drawn for a plane")
+      ->capture_default_str()
       ->check(CLI::PositiveNumber);
 }
 

@@ -26,8 +26,8 @@ struct SettingsOptions {
   std::uint64_t seed = 0;
   Shading shading = Shading::Phong;
   bool noCulling = false;
-  int tessellation = 8;
-  float planeSize = 1000.0f;
+  int tessellation = kDefaultTessellationLevel;
+  float planeSize = kDefaultPlaneSize;
 };
 
 void addSettingsOptions(CLI::App& command, SettingsOptions& options);

@@ -9,6 +9,7 @@
 #include "core/stats.hpp"
 #include "ray/accelerator.hpp"
 #include "scene/scene.hpp"
+#include "scene/tessellation.hpp"
 
 namespace rise {
 
@@ -33,8 +34,8 @@ struct RenderSettings {
   // square that stands in for an infinite plane.
   Shading shading = Shading::Phong;
   bool backfaceCulling = true;
-  int tessellation = 8;
-  float planeSize = 1000.0f;
+  int tessellation = kDefaultTessellationLevel;
+  float planeSize = kDefaultPlaneSize;
 };
 
 // What every algorithm returns: the image (linear colours), the auxiliary

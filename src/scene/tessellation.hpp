@@ -15,13 +15,23 @@ namespace rise {
 
 class Shape;
 
+// How finely curved surfaces are cut by default: a circle into 32 segments.
+inline constexpr int kDefaultTessellationLevel = 8;
+// The default side of the square that stands in for an infinite plane. Seen
+// from a height h, the square ends short of the plane's horizon by the angle
+// atan(2 h / side); this side keeps that angle under a tenth of a pixel for
+// eyes a few units up, so that the floor reaches the horizon as the ray
+// tracer's does. Depths and texture coordinates stay well within a float's
+// precision.
+inline constexpr float kDefaultPlaneSize = 100000.0f;
+
 struct TessellationSettings {
   // How finely curved surfaces are cut: a circle becomes 4 * level segments,
   // a sphere's meridian 2 * level.
-  int level = 8;
+  int level = kDefaultTessellationLevel;
   // The side of the square that stands in for an infinite plane, centred at
   // the foot of the perpendicular from `viewpoint`, under the camera.
-  float planeSize = 1000.0f;
+  float planeSize = kDefaultPlaneSize;
   Vec3 viewpoint{0.0f};
   // The instant drawn: moving shapes are tessellated where they are then.
   float time = 0.0f;

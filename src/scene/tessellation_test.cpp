@@ -119,8 +119,9 @@ TEST(Tessellation, CentresAPlanesSquareUnderTheViewpoint) {
     EXPECT_NEAR(vertex.uv.x, vertex.position.x, 1e-3f);
     EXPECT_NEAR(vertex.uv.y, -vertex.position.z, 1e-3f);
   }
-  EXPECT_NEAR(low.x, 3.0f - 500.0f, 1e-2f);
-  EXPECT_NEAR(high.z, -7.0f + 500.0f, 1e-2f);
+  const float half = 0.5f * kDefaultPlaneSize;
+  EXPECT_NEAR(low.x, 3.0f - half, 1e-6f * half);
+  EXPECT_NEAR(high.z, -7.0f + half, 1e-6f * half);
   EXPECT_EQ(low.y, 1.0f);
   EXPECT_EQ(high.y, 1.0f);
   EXPECT_FALSE(square.enclosesSolid);
