@@ -38,6 +38,7 @@ class ThinLensTracer final : public SampleTracer {
     StratifiedPathSampler paths(sample, rng);
     return tracer_.tracePrimary(ray, paths, counters);
   }
+  bool usesEffectSamples() const override { return true; }
 
  private:
   ViewFrame view_;

@@ -16,22 +16,16 @@ namespace {
 // tile to spare an allocation per pixel.
 class CameraSampleSet {
  public:
-  void generate(int x, int y, const PixelSampling& sampling, Rng& rng) {
+  void generate(int x, int y, const PixelSampling& sampling, bool withEffects, Rng& rng) {
     const int n = sampling.samples;
-    const bool random = sampling.pattern == SamplePattern::Random;
-    const SamplePattern spread = random ? SamplePattern::Random : SamplePattern::Jittered;
-    samplePositions(sampling.pattern, n, rng, pixel_);
-    samplePositions(spread, n, rng, lens_);
-    samplePositions(spread, n, rng, light_);
-    samplePositions(spread, n, rng, gloss_);
-    jitteredValues(n, rng, time_);
-    if (random)
-      for (float& t : time_) t = rng.uniform();
-    shuffle(lens_, rng);
-    shuffle(light_, rng);
-    shuffle(gloss_, rng);
-    shuffle(time_, rng);
     corner_ = Vec2(static_cast<float>(x), static_cast<float>(y));
+    samplePositions(sampling.pattern, n, rng, pixel_);
+    if (withEffects) {
+      generateEffects(n, sampling.pattern == SamplePattern::Random, rng);
+    } else {
+      for (auto* positions : {&lens_, &light_, &gloss_}) positions->assign(n, Vec2(0.5f));
+      time_.assign(n, 0.5f);
+    }
   }
 
   int size() const { return static_cast<int>(pixel_.size()); }
@@ -42,6 +36,20 @@ class CameraSampleSet {
   }
 
  private:
+  void generateEffects(int n, bool random, Rng& rng) {
+    const SamplePattern spread = random ? SamplePattern::Random : SamplePattern::Jittered;
+    samplePositions(spread, n, rng, lens_);
+    samplePositions(spread, n, rng, light_);
+    samplePositions(spread, n, rng, gloss_);
+    jitteredValues(n, rng, time_);
+    if (random)
+      for (float& t : time_) t = rng.uniform();
+    shuffle(lens_, rng);
+    shuffle(light_, rng);
+    shuffle(gloss_, rng);
+    shuffle(time_, rng);
+  }
+
   Vec2 corner_;
   std::vector<Vec2> pixel_, lens_, light_, gloss_;
   std::vector<float> time_;
@@ -147,7 +155,7 @@ class ImageSampler {
     for (int y = tile.y0; y < tile.y1; ++y) {
       for (int x = tile.x0; x < tile.x1; ++x) {
         Rng rng(pixelSeed(settings_.seed, x, y));
-        samples.generate(x, y, settings_.sampling, rng);
+        samples.generate(x, y, settings_.sampling, tracer_.usesEffectSamples(), rng);
         const std::uint64_t testsBefore = counters.intersections.tests;
         SampleResult first;
         for (int i = 0; i < samples.size(); ++i) {

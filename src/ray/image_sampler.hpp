@@ -41,6 +41,10 @@ class SampleTracer {
   virtual ~SampleTracer() = default;
   virtual SampleResult trace(const CameraSample& sample, Rng& rng,
                              TraceCounters& counters) const = 0;
+  // Whether it reads the dimensions beyond the pixel (lens, time, light,
+  // gloss). A tracer that does not is given their centres, and the sampler
+  // spares itself stratifying and shuffling them for every pixel.
+  virtual bool usesEffectSamples() const = 0;
 };
 
 // Renders the image by sampling every pixel with `tracer`, in parallel tiles,

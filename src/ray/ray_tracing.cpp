@@ -18,6 +18,7 @@ class PinholeTracer final : public SampleTracer {
     return tracer_.tracePrimary(view_.primaryRay(sample.raster.x, sample.raster.y), centred,
                                 counters);
   }
+  bool usesEffectSamples() const override { return false; }
 
  private:
   ViewFrame view_;
