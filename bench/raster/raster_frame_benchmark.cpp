@@ -54,7 +54,7 @@ int main(int argc, char** argv) {
   double best = 1e30, total = 0.0;
   for (int frame = 0; frame < frames; ++frame) {
     const auto frameStart = std::chrono::steady_clock::now();
-    renderer->renderSample(scene, tessellated, settings, Vec2(0.5f), observer);
+    renderer->renderSample(scene, tessellated, settings, AccumulationPass{}, observer);
     const double seconds = secondsSince(frameStart);
     best = std::min(best, seconds);
     total += seconds;

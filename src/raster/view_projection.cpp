@@ -4,9 +4,11 @@
 
 namespace rise {
 
-ViewProjection::ViewProjection(const ViewFrame& frame, Vec2 sampleOffset)
-    : eye_(frame.eye()), width_(frame.width()), height_(frame.height()) {
-  const Mat4 translation = glm::translate(Mat4(1.0f), -frame.eye());
+ViewProjection::ViewProjection(const ViewFrame& frame, Vec2 sampleOffset, Vec2 lensSample)
+    : width_(frame.width()), height_(frame.height()) {
+  const Vec2 onLens = frame.lensPoint(lensSample);
+  eye_ = frame.eye() + onLens.x * frame.right() + onLens.y * frame.up();
+  const Mat4 translation = glm::translate(Mat4(1.0f), -eye_);
   // glm matrices are indexed by column: rotation[c][r]. Its rows are U, V, N.
   Mat4 rotation(1.0f);
   for (int c = 0; c < 3; ++c) {
@@ -21,9 +23,10 @@ ViewProjection::ViewProjection(const ViewFrame& frame, Vec2 sampleOffset)
   // then shifted so that the sample lands on the pixel's centre.
   const Vec2 shift = Vec2(0.5f) - sampleOffset;
   xScale_ = 0.5f * static_cast<float>(width_) / frame.halfWidth();
-  xOffset_ = 0.5f * static_cast<float>(width_) + shift.x;
   yScale_ = -0.5f * static_cast<float>(height_) / frame.halfHeight();
-  yOffset_ = 0.5f * static_cast<float>(height_) + shift.y;
+  const Vec2 focusShift = onLens / frame.focalDistance();
+  xOffset_ = 0.5f * static_cast<float>(width_) + shift.x + xScale_ * focusShift.x;
+  yOffset_ = 0.5f * static_cast<float>(height_) + shift.y + yScale_ * focusShift.y;
 }
 
 glm::dvec3 ViewProjection::rasterForm(const glm::dvec3& directionForm) const {

@@ -13,6 +13,20 @@
 // The axes and the extent of the screen are those of the ray tracer's
 // ViewFrame, so that the point this projection puts at a raster position is
 // the point the ray tracer's primary ray through that position meets.
+//
+// A camera with an aperture is a thin lens: seen from a point of the lens
+// instead of the eye, the projection is the same but for a shift that keeps
+// the plane in focus where it was (Haeberli and Akeley 1990). A point
+// (u, v, n) of the eye's camera coordinates, seen from the lens point
+// (lu, lv, 0) through the point where that line crosses the focal plane
+// n = F, lands where the eye sees that crossing:
+//
+//   x = xScale ((u - lu) / n + lu / F) + xOffset
+//
+// the projection from the lens point, shifted by xScale lu / F (and likewise
+// for y). Points on the focal plane stay put; the others move with the lens
+// point, the more the farther they are from that plane, and averaging images
+// over the lens blurs them as the ray tracer's thin-lens rays do.
 #pragma once
 
 #include <array>
@@ -30,7 +44,10 @@ class ViewProjection {
   // that the algorithms always sample at pixel centres: rendering several
   // times with offsets spread over the pixel and averaging the images
   // anti-aliases them (an accumulation buffer).
-  explicit ViewProjection(const ViewFrame& frame, Vec2 sampleOffset = Vec2(0.5f));
+  // `lensSample` in the unit square picks the point of the lens the image is
+  // seen from (ViewFrame::lensPoint); the eye for a pinhole camera.
+  explicit ViewProjection(const ViewFrame& frame, Vec2 sampleOffset = Vec2(0.5f),
+                          Vec2 lensSample = Vec2(0.5f));
 
   // Matriz3D: R T, from world to camera coordinates (u, v, n).
   const Mat4& cameraFromWorld() const { return cameraFromWorld_; }

@@ -19,29 +19,42 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
 
 }  // namespace
 
-TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& settings) {
+TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& settings,
+                                     float time) {
   TessellationSettings tessellation;
   tessellation.level = settings.tessellation;
   tessellation.planeSize = settings.planeSize;
   tessellation.viewpoint = scene.camera.position;
-  tessellation.time = 0.0f;  // the shutter's opening, as Whitted's ray tracer sees it
+  tessellation.time = time;
   return tessellateScene(scene, tessellation);
 }
 
 namespace {
 
-// The sub-pixel offsets of the accumulation buffer's passes: the render's
-// sample pattern, the same in every pixel. Adaptive refinement needs a pixel
-// of its own to refine, which a whole-frame pass is not, so it takes
-// jittered offsets.
-std::vector<Vec2> passOffsets(const RenderSettings& settings) {
+// The accumulation buffer's passes: where in the pixel, where on the lens
+// and when in the shutter interval each is taken, every dimension stratified
+// on its own and shuffled, as the distributed ray tracer's samples are (Cook
+// 1986). The offsets follow the render's sample pattern, the same in every
+// pixel; adaptive refinement needs a pixel of its own to refine, which a
+// whole-frame pass is not, so it takes jittered offsets. A camera without a
+// shutter interval takes every pass at its opening.
+std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
+                                                 const RenderSettings& settings) {
   const PixelSampling& sampling = settings.sampling;
   const SamplePattern pattern =
       sampling.pattern == SamplePattern::Adaptive ? SamplePattern::Jittered : sampling.pattern;
   Rng rng(settings.seed);
-  std::vector<Vec2> offsets;
+  std::vector<Vec2> offsets, lens;
+  std::vector<float> times;
   samplePositions(pattern, sampling.samples, rng, offsets);
-  return offsets;
+  samplePositions(SamplePattern::Jittered, sampling.samples, rng, lens);
+  jitteredValues(sampling.samples, rng, times);
+  shuffle(lens, rng);
+  shuffle(times, rng);
+  std::vector<AccumulationPass> passes;
+  for (int i = 0; i < sampling.samples; ++i)
+    passes.push_back({offsets[i], lens[i], camera.hasMotionBlur() ? times[i] : 0.0f});
+  return passes;
 }
 
 // Reports the progress of one pass as its share of all of them.
@@ -62,26 +75,28 @@ class PassObserver final : public RenderObserver {
 
 }  // namespace
 
-// Anti-aliasing by accumulation (Haeberli & Akeley 1990): one whole image a
-// sample offset, each image's pixels added to the film as samples at that
-// offset, so that the reconstruction filter weighs them as it weighs the ray
-// tracers' samples. The auxiliary buffers are the first pass's, but "cost",
-// which adds up over the passes, as do the counters.
+// Each pass's pixels are added to the film as samples at the pass's offset,
+// so that the reconstruction filter weighs them as it weighs the ray
+// tracers' samples. The scene is tessellated again only when a pass's time
+// differs from the last. The auxiliary buffers are the first pass's, but
+// "cost", which adds up over the passes, as do the counters.
 RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSettings& settings,
                                             RenderObserver& observer) const {
-  const TessellatedScene tessellated = tessellateForRaster(scene, settings);
-  const std::vector<Vec2> offsets = passOffsets(settings);
-  const int passes = static_cast<int>(offsets.size());
+  const std::vector<AccumulationPass> passes = accumulationPasses(scene.camera, settings);
+  const int passCount = static_cast<int>(passes.size());
+  TessellatedScene tessellated = tessellateForRaster(scene, settings, passes[0].time);
   Film film(settings.width, settings.height, settings.sampling.filter);
   FilmTile filmTile = film.tileFor(Tile{0, 0, 0, settings.width, settings.height});
 
   RenderResult accumulated;
-  for (int pass = 0; pass < passes && !observer.cancelled(); ++pass) {
-    PassObserver passObserver(observer, pass, passes);
-    RenderResult result = renderSample(scene, tessellated, settings, offsets[pass], passObserver);
+  for (int pass = 0; pass < passCount && !observer.cancelled(); ++pass) {
+    if (pass > 0 && passes[pass].time != passes[pass - 1].time)
+      tessellated = tessellateForRaster(scene, settings, passes[pass].time);
+    PassObserver passObserver(observer, pass, passCount);
+    RenderResult result = renderSample(scene, tessellated, settings, passes[pass], passObserver);
     for (int y = 0; y < settings.height; ++y)
       for (int x = 0; x < settings.width; ++x)
-        filmTile.addSample({x, y}, offsets[pass], result.image.at(x, y));
+        filmTile.addSample({x, y}, passes[pass].pixelOffset, result.image.at(x, y));
     if (pass == 0) {
       accumulated = std::move(result);
       continue;
@@ -96,16 +111,18 @@ RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSett
   const double covered = accumulated.stats.value("covered_pixels");
   accumulated.stats.add("overdraw",
                         covered > 0.0 ? accumulated.stats.value("pixels_written") / covered : 0.0);
-  accumulated.stats.add("samples_per_pixel", passes);
+  accumulated.stats.add("samples_per_pixel", passCount);
   return accumulated;
 }
 
 RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
                                                   const TessellatedScene& tessellated,
-                                                  const RenderSettings& settings, Vec2 sampleOffset,
+                                                  const RenderSettings& settings,
+                                                  const AccumulationPass& pass,
                                                   RenderObserver& observer) const {
   const int threads = resolveThreadCount(settings.threads);
-  const ViewProjection view(ViewFrame(scene.camera, settings.width, settings.height), sampleOffset);
+  const ViewProjection view(ViewFrame(scene.camera, settings.width, settings.height),
+                            pass.pixelOffset, pass.lens);
   const ScreenGeometry screen = projectScene(tessellated, view, settings.backfaceCulling, threads);
   const SurfaceShader shader(scene, tessellated, screen, view, settings.shading, threads);
   RasterFrame frame(settings.width, settings.height, scene.image.background, screen, shader,

@@ -20,18 +20,30 @@
 
 namespace rise {
 
+// One image of the accumulation buffer: each pixel (i, j) shows the scene at
+// the raster position (i + pixelOffset.x, j + pixelOffset.y), seen from the
+// point of the lens that `lens` picks (ViewProjection), at the fraction
+// `time` of the shutter interval. The defaults are a pinhole image of pixel
+// centres at the shutter's opening.
+struct AccumulationPass {
+  Vec2 pixelOffset{0.5f};
+  Vec2 lens{0.5f};
+  float time = 0.0f;
+};
+
+// Averaging images taken over offsets spread across the pixel anti-aliases
+// them; over points spread across the lens, it blurs what is out of focus;
+// over instants spread across the shutter interval, what moves (P. Haeberli
+// and K. Akeley, "The accumulation buffer: hardware support for high-quality
+// rendering", SIGGRAPH 1990). Each pass is a whole image by the algorithm.
 class VisibleSurfaceRenderer : public Renderer {
  public:
   RenderResult render(const Scene& scene, const RenderSettings& settings,
                       RenderObserver& observer) const override;
 
-  // One image of a tessellated scene, each pixel (i, j) showing the scene at
-  // the raster position (i + sampleOffset.x, j + sampleOffset.y). Averaging
-  // such images over offsets spread across the pixel anti-aliases them, as an
-  // accumulation buffer does (P. Haeberli and K. Akeley, "The accumulation
-  // buffer: hardware support for high-quality rendering", SIGGRAPH 1990).
+  // One pass, of the scene tessellated at the pass's time.
   RenderResult renderSample(const Scene& scene, const TessellatedScene& tessellated,
-                            const RenderSettings& settings, Vec2 sampleOffset,
+                            const RenderSettings& settings, const AccumulationPass& pass,
                             RenderObserver& observer) const;
 
  protected:
@@ -43,7 +55,9 @@ class VisibleSurfaceRenderer : public Renderer {
 };
 
 // The scene tessellated as the settings ask, planes centred under the camera,
-// moving shapes where they are when the shutter opens.
-TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& settings);
+// moving shapes where they are at `time`, a fraction of the shutter interval
+// (0, its opening, by default, as Whitted's ray tracer sees the scene).
+TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& settings,
+                                     float time = 0.0f);
 
 }  // namespace rise

@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "core/sampling.hpp"
-
 namespace rise {
 
 ViewFrame::ViewFrame(const Camera& camera, int width, int height)
@@ -32,7 +30,7 @@ Ray ViewFrame::thinLensRay(const Vec2& raster, const Vec2& lens) const {
   const Ray pinhole = primaryRay(raster.x, raster.y);
   if (lensRadius_ == 0.0f) return pinhole;
   const Vec3 inFocus = pinhole.at(focalDistance_ / glm::dot(pinhole.direction, forward_));
-  const Vec2 onLens = lensRadius_ * squareToDisk(lens);
+  const Vec2 onLens = lensPoint(lens);
   const Vec3 origin = eye_ + onLens.x * right_ + onLens.y * up_;
   return Ray{origin, glm::normalize(inFocus - origin)};
 }

@@ -2,6 +2,7 @@
 
 #include "core/math.hpp"
 #include "core/ray.hpp"
+#include "core/sampling.hpp"
 
 namespace rise {
 
@@ -17,7 +18,7 @@ struct Camera {
   float aperture = 0.0f;       // the lens's diameter; 0 is a pinhole, everything sharp
   float focalDistance = 0.0f;  // from the eye to the plane in focus; 0: the look_at point's
   float shutterOpen = 0.0f;
-  float shutterClose = 0.0f;   // equal to shutterOpen: an instant, no motion blur
+  float shutterClose = 0.0f;  // equal to shutterOpen: an instant, no motion blur
 
   bool hasMotionBlur() const { return shutterClose > shutterOpen; }
 };
@@ -42,6 +43,12 @@ class ViewFrame {
   // others blur with their distance from it. With no aperture it is the
   // pinhole ray.
   Ray thinLensRay(const Vec2& raster, const Vec2& lens) const;
+
+  // The point of the lens chosen by the sample `lens` in the unit square, as
+  // offsets along right and up from the eye: uniform over the lens's disk,
+  // (0, 0) with no aperture.
+  Vec2 lensPoint(const Vec2& lens) const { return lensRadius_ * squareToDisk(lens); }
+  float focalDistance() const { return focalDistance_; }
 
   const Vec3& eye() const { return eye_; }
   const Vec3& right() const { return right_; }
