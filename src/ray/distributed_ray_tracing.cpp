@@ -50,11 +50,7 @@ class ThinLensTracer final : public SampleTracer {
 
 RenderResult DistributedRayTracer::render(const Scene& scene, const RenderSettings& settings,
                                           RenderObserver& observer) const {
-  const SceneIntersector intersector(scene, settings.accel, settings.threads);
-  RenderResult result =
-      renderBySampling(settings, observer, ThinLensTracer(scene, intersector, settings));
-  intersector.addBuildStats(result.stats);
-  return result;
+  return renderByTracing<ThinLensTracer>(scene, settings, observer);
 }
 
 }  // namespace rise

@@ -14,6 +14,7 @@
 #pragma once
 
 #include "core/random.hpp"
+#include "ray/scene_intersector.hpp"
 #include "ray/trace_counters.hpp"
 #include "render/renderer.hpp"
 
@@ -52,5 +53,16 @@ class SampleTracer {
 // sample; with the adaptive pattern, its top-left corner) and the counters.
 RenderResult renderBySampling(const RenderSettings& settings, RenderObserver& observer,
                               const SampleTracer& tracer);
+
+// The same with a `Tracer(scene, intersector, settings)` over the scene's
+// acceleration structure, built first, whose build statistics are added.
+template <typename Tracer>
+RenderResult renderByTracing(const Scene& scene, const RenderSettings& settings,
+                             RenderObserver& observer) {
+  const SceneIntersector intersector(scene, settings.accel, settings.threads);
+  RenderResult result = renderBySampling(settings, observer, Tracer(scene, intersector, settings));
+  intersector.addBuildStats(result.stats);
+  return result;
+}
 
 }  // namespace rise

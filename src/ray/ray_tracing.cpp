@@ -29,11 +29,7 @@ class PinholeTracer final : public SampleTracer {
 
 RenderResult WhittedRayTracer::render(const Scene& scene, const RenderSettings& settings,
                                       RenderObserver& observer) const {
-  const SceneIntersector intersector(scene, settings.accel, settings.threads);
-  RenderResult result =
-      renderBySampling(settings, observer, PinholeTracer(scene, intersector, settings));
-  intersector.addBuildStats(result.stats);
-  return result;
+  return renderByTracing<PinholeTracer>(scene, settings, observer);
 }
 
 }  // namespace rise
