@@ -87,6 +87,7 @@ TEST_P(ExampleScene, LooksTheSameToEveryVisibleSurfaceAlgorithm) {
   const RenderSettings settings = settingsFor(scene);
   const RenderResult reference = render("z-buffer", scene, settings);
   for (std::string_view algorithm : kAlgorithms) {
+    if (algorithm == "z-buffer") continue;
     const RenderResult result = render(algorithm, scene, settings);
     EXPECT_LE(pixelsDiffering(result.image, reference.image), kWidth * kHeight / 100) << algorithm;
   }

@@ -24,4 +24,9 @@ inline float radians(float degrees) { return degrees * (kPi / 180.0f); }
 
 inline float maxComponent(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
 
+// The axis (0, 1 or 2) of the largest component, the first of equals.
+inline int largestAxis(const Vec3& v) {
+  return v.x >= v.y && v.x >= v.z ? 0 : (v.y >= v.z ? 1 : 2);
+}
+
 }  // namespace rise

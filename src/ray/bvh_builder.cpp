@@ -176,9 +176,7 @@ class Builder {
   // When the bins cannot separate the primitives (their centroids all but
   // coincide), half of them go each way, ordered along the widest axis.
   std::uint32_t splitAtMedian(std::uint32_t begin, std::uint32_t end, const Bounds3& centroids) {
-    const Vec3 extent = centroids.extent();
-    const int axis =
-        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const int axis = largestAxis(centroids.extent());
     const std::uint32_t middle = begin + (end - begin) / 2;
     std::nth_element(primitives_.begin() + begin, primitives_.begin() + middle,
                      primitives_.begin() + end,

@@ -12,26 +12,25 @@ namespace {
 
 // The camera samples of one pixel: n values for each dimension, every
 // dimension stratified on its own (uniformly random for the random pattern)
-// and shuffled, which is Cook's decorrelation. Kept across the pixels of a
-// tile to spare an allocation per pixel.
+// and shuffled, which is Cook's decorrelation. For a tracer that reads only
+// the pixel dimension, the others are their centres, never generated. Kept
+// across the pixels of a tile to spare an allocation per pixel.
 class CameraSampleSet {
  public:
-  void generate(int x, int y, const PixelSampling& sampling, bool withEffects, Rng& rng) {
-    const int n = sampling.samples;
+  explicit CameraSampleSet(bool withEffects) : withEffects_(withEffects) {}
+
+  void generate(int x, int y, const PixelSampling& sampling, Rng& rng) {
     corner_ = Vec2(static_cast<float>(x), static_cast<float>(y));
-    samplePositions(sampling.pattern, n, rng, pixel_);
-    if (withEffects) {
-      generateEffects(n, sampling.pattern == SamplePattern::Random, rng);
-    } else {
-      for (auto* positions : {&lens_, &light_, &gloss_}) positions->assign(n, Vec2(0.5f));
-      time_.assign(n, 0.5f);
-    }
+    samplePositions(sampling.pattern, sampling.samples, rng, pixel_);
+    if (withEffects_)
+      generateEffects(sampling.samples, sampling.pattern == SamplePattern::Random, rng);
   }
 
   int size() const { return static_cast<int>(pixel_.size()); }
   // Where sample i lies in its pixel, from the top-left corner.
   const Vec2& offset(int i) const { return pixel_[i]; }
   CameraSample operator[](int i) const {
+    if (!withEffects_) return {corner_ + pixel_[i], Vec2(0.5f), 0.5f, Vec2(0.5f), Vec2(0.5f)};
     return {corner_ + pixel_[i], lens_[i], time_[i], light_[i], gloss_[i]};
   }
 
@@ -50,6 +49,7 @@ class CameraSampleSet {
     shuffle(time_, rng);
   }
 
+  bool withEffects_;
   Vec2 corner_;
   std::vector<Vec2> pixel_, lens_, light_, gloss_;
   std::vector<float> time_;
@@ -151,11 +151,11 @@ class ImageSampler {
 
   void renderStratifiedTile(const Tile& tile, FilmTile& film, TileOutput& output) const {
     TraceCounters& counters = output.counters;
-    CameraSampleSet samples;
+    CameraSampleSet samples(tracer_.usesEffectSamples());
     for (int y = tile.y0; y < tile.y1; ++y) {
       for (int x = tile.x0; x < tile.x1; ++x) {
         Rng rng(pixelSeed(settings_.seed, x, y));
-        samples.generate(x, y, settings_.sampling, tracer_.usesEffectSamples(), rng);
+        samples.generate(x, y, settings_.sampling, rng);
         const std::uint64_t testsBefore = counters.intersections.tests;
         SampleResult first;
         for (int i = 0; i < samples.size(); ++i) {

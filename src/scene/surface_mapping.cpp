@@ -87,8 +87,7 @@ void cubeFaceTangents(const Vec3& faceNormal, const Vec3& min, const Vec3& max, 
 }
 
 Vec3 cubeFaceFacing(const Vec3& normal) {
-  const Vec3 size = glm::abs(normal);
-  const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+  const int axis = largestAxis(glm::abs(normal));
   Vec3 face(0.0f);
   face[axis] = normal[axis] < 0.0f ? -1.0f : 1.0f;
   return face;
