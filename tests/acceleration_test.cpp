@@ -2,8 +2,9 @@
 // image, to the bit, whichever one finds the hits; only the cost differs.
 #include <gtest/gtest.h>
 
-#include "render/registry.hpp"
-#include "scene/scene_file.hpp"
+#include "algorithms/registry.hpp"
+#include "io/scene_file.hpp"
+#include "ray/accelerator.hpp"
 
 namespace rise {
 namespace {

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "core/image_io.hpp"
-#include "render/registry.hpp"
-#include "scene/scene_file.hpp"
+#include "algorithms/registry.hpp"
+#include "io/image_io.hpp"
+#include "io/scene_file.hpp"
 
 namespace rise {
 namespace {

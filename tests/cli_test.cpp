@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "core/image_io.hpp"
-#include "core/temporary_folder_testing.hpp"
+#include "io/image_io.hpp"
+#include "support/temporary_folder_testing.hpp"
 
 namespace rise {
 namespace {

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include "render/registry.hpp"
-#include "scene/scene_file.hpp"
+#include "algorithms/registry.hpp"
+#include "io/scene_file.hpp"
 
 namespace rise {
 namespace {

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "raster/raster_testing.hpp"
-#include "render/registry.hpp"
-#include "scene/scene_file.hpp"
+#include "algorithms/registry.hpp"
+#include "io/scene_file.hpp"
+#include "support/raster_testing.hpp"
 
 namespace rise {
 namespace {

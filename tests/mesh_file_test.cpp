@@ -4,7 +4,7 @@
 // file (missing, unsupported, cut short, random bytes, empty) is refused with
 // one message, never a crash. The messages are what users read, so the
 // expected strings below are their specification.
-#include "scene/mesh_file.hpp"
+#include "io/mesh_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "core/temporary_folder_testing.hpp"
-#include "scene/scene_file.hpp"
+#include "io/scene_file.hpp"
 #include "scene/shapes/keyframed_mesh.hpp"
-#include "scene/shapes/shape_testing.hpp"
 #include "scene/shapes/triangle.hpp"
 #include "scene/shapes/triangle_mesh.hpp"
+#include "support/shape_testing.hpp"
+#include "support/temporary_folder_testing.hpp"
 
 namespace rise {
 namespace {

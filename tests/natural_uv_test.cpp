@@ -9,9 +9,9 @@
 #include "scene/shapes/cone.hpp"
 #include "scene/shapes/convex_polygon.hpp"
 #include "scene/shapes/cylinder.hpp"
-#include "scene/shapes/shape_testing.hpp"
 #include "scene/shapes/sphere.hpp"
 #include "scene/shapes/triangle.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {

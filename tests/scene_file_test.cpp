@@ -2,7 +2,7 @@
 // them, defaults fill what is left out, transforms place shapes, and every bad
 // file in tests/scenes/bad is rejected with its exact message. Those messages
 // are what users read, so the expected strings below are their specification.
-#include "scene/scene_file.hpp"
+#include "io/scene_file.hpp"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "scene/shapes/shape_testing.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {

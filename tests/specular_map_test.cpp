@@ -7,12 +7,12 @@
 #include <fstream>
 #include <string>
 
-#include "core/image_io.hpp"
-#include "core/temporary_folder_testing.hpp"
-#include "raster/raster_testing.hpp"
+#include "io/image_io.hpp"
+#include "io/scene_file.hpp"
 #include "scene/scene.hpp"
-#include "scene/scene_file.hpp"
 #include "shading/phong.hpp"
+#include "support/raster_testing.hpp"
+#include "support/temporary_folder_testing.hpp"
 
 namespace rise {
 namespace {

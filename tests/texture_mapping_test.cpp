@@ -12,20 +12,20 @@
 #include <memory>
 #include <string>
 
-#include "core/image_io.hpp"
-#include "core/temporary_folder_testing.hpp"
-#include "raster/raster_testing.hpp"
-#include "scene/image_texture.hpp"
-#include "scene/mesh_mapping.hpp"
+#include "io/image_io.hpp"
+#include "io/scene_error.hpp"
+#include "io/scene_file.hpp"
 #include "scene/scene.hpp"
-#include "scene/scene_error.hpp"
-#include "scene/scene_file.hpp"
 #include "scene/shapes/box.hpp"
 #include "scene/shapes/cylinder.hpp"
 #include "scene/shapes/mapped_shape.hpp"
-#include "scene/shapes/shape_testing.hpp"
 #include "scene/shapes/sphere.hpp"
-#include "scene/surface_mapping.hpp"
+#include "scene/textures/image_texture.hpp"
+#include "scene/textures/mesh_mapping.hpp"
+#include "scene/textures/surface_mapping.hpp"
+#include "support/raster_testing.hpp"
+#include "support/shape_testing.hpp"
+#include "support/temporary_folder_testing.hpp"
 
 namespace rise {
 namespace {
@@ -220,7 +220,7 @@ class MappedScene : public TemporaryFolderTest {
         texels.at(x, y) = Color(static_cast<float>(x) / 7.0f, static_cast<float>(y) / 3.0f,
                                 static_cast<float>((x + y) % 2));
     writeImage(texels, directory_ / "texels.png");
-    texels_ = readTextureImage(directory_ / "texels.png");
+    texels_ = readImage(directory_ / "texels.png");
   }
   void TearDown() override { std::filesystem::remove_all(directory_); }
 

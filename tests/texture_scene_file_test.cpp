@@ -9,17 +9,17 @@
 #include <fstream>
 #include <string>
 
-#include "core/image_io.hpp"
-#include "core/pcx_file.hpp"
-#include "core/temporary_folder_testing.hpp"
-#include "raster/raster_testing.hpp"
-#include "scene/image_texture.hpp"
-#include "scene/normal_map.hpp"
-#include "scene/perlin_noise.hpp"
+#include "io/image_io.hpp"
+#include "io/pcx_file.hpp"
+#include "io/scene_error.hpp"
+#include "io/scene_file.hpp"
 #include "scene/scene.hpp"
-#include "scene/scene_error.hpp"
-#include "scene/scene_file.hpp"
-#include "scene/shapes/shape_testing.hpp"
+#include "scene/textures/image_texture.hpp"
+#include "scene/textures/normal_map.hpp"
+#include "scene/textures/perlin_noise.hpp"
+#include "support/raster_testing.hpp"
+#include "support/shape_testing.hpp"
+#include "support/temporary_folder_testing.hpp"
 
 namespace rise {
 namespace {
@@ -200,7 +200,7 @@ TEST_F(TextureSceneFile, DressesAnUntexturedMd2ModelInItsSkin) {
   EXPECT_EQ(scene.shapes[1]->material(), 2);
   EXPECT_EQ(scene.shapes[2]->material(), 1);
   // The skin's texel at the middle of its first row, where v = 1.
-  const Image skin = readTextureImage(kSydney / "sydney.pcx");
+  const Image skin = readImage(kSydney / "sydney.pcx");
   SurfacePoint top(Vec3(0.0f), Vec3(0, 1, 0), Vec2((154.0f + 0.5f) / 308.0f, 1.0f - 0.5f / 193.0f));
   expectColor(scene.materials[2].colorAt(top), skin.at(154, 0));
 }

@@ -9,16 +9,16 @@
 #include <string>
 #include <vector>
 
-#include "core/image_io.hpp"
-#include "core/pcx_file.hpp"
-#include "scene/bump_map.hpp"
-#include "scene/image_texture.hpp"
-#include "scene/mesh_file.hpp"
-#include "scene/noise_texture.hpp"
-#include "scene/normal_map.hpp"
-#include "scene/perlin_noise.hpp"
-#include "scene/shapes/shape_testing.hpp"
-#include "scene/transformed_texture.hpp"
+#include "io/image_io.hpp"
+#include "io/mesh_file.hpp"
+#include "io/pcx_file.hpp"
+#include "scene/textures/bump_map.hpp"
+#include "scene/textures/image_texture.hpp"
+#include "scene/textures/noise_texture.hpp"
+#include "scene/textures/normal_map.hpp"
+#include "scene/textures/perlin_noise.hpp"
+#include "scene/textures/transformed_texture.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {
@@ -90,8 +90,8 @@ const std::filesystem::path kSydney =
     std::filesystem::path(RISE_SOURCE_DIR) / "examples/models/sydney";
 
 TEST(PcxFile, SydneysSkinMatchesTheSameImageAsBmp) {
-  const Image pcx = readTextureImage(kSydney / "sydney.pcx");
-  const Image bmp = readTextureImage(kSydney / "sydney.bmp");
+  const Image pcx = readImage(kSydney / "sydney.pcx");
+  const Image bmp = readImage(kSydney / "sydney.bmp");
   ASSERT_EQ(pcx.width(), 308);
   ASSERT_EQ(pcx.height(), 193);
   ASSERT_EQ(bmp.width(), pcx.width());

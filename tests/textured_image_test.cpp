@@ -7,13 +7,13 @@
 #include <cmath>
 #include <string>
 
-#include "raster/raster_testing.hpp"
-#include "scene/bump_map.hpp"
-#include "scene/perlin_noise.hpp"
+#include "io/scene_file.hpp"
 #include "scene/scene.hpp"
-#include "scene/scene_file.hpp"
-#include "scene/shapes/shape_testing.hpp"
 #include "scene/shapes/sphere.hpp"
+#include "scene/textures/bump_map.hpp"
+#include "scene/textures/perlin_noise.hpp"
+#include "support/raster_testing.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {

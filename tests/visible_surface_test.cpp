@@ -8,8 +8,8 @@
 #include <string>
 
 #include "core/random.hpp"
-#include "raster/raster_testing.hpp"
-#include "scene/scene_file.hpp"
+#include "io/scene_file.hpp"
+#include "support/raster_testing.hpp"
 
 namespace rise {
 namespace {

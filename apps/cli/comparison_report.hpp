@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/image_io.hpp"
+#include "io/image_io.hpp"
 #include "render/renderer.hpp"
 
 namespace rise::cli {

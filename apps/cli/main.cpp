@@ -7,12 +7,12 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "algorithms/registry.hpp"
 #include "comparison_report.hpp"
-#include "core/image_io.hpp"
+#include "io/image_io.hpp"
+#include "io/scene_error.hpp"
 #include "progress_bar.hpp"
 #include "render/buffer_images.hpp"
-#include "render/registry.hpp"
-#include "scene/scene_error.hpp"
 #include "settings_options.hpp"
 #include "stats_report.hpp"
 

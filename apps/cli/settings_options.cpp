@@ -4,8 +4,9 @@
 #include <iostream>
 #include <iterator>
 
+#include "io/scene_file.hpp"
+#include "ray/accelerator.hpp"
 #include "render/tiles.hpp"
-#include "scene/scene_file.hpp"
 
 namespace rise::cli {
 namespace {

@@ -5,8 +5,8 @@
 #include <map>
 #include <utility>
 
+#include "io/mesh_file.hpp"
 #include "scene/camera.hpp"
-#include "scene/mesh_file.hpp"
 #include "scene/shapes/triangle_mesh.hpp"
 
 namespace rise::bench {

@@ -13,9 +13,9 @@
 #include <map>
 #include <string>
 
+#include "algorithms/registry.hpp"
+#include "io/scene_file.hpp"
 #include "raster/visible_surface_renderer.hpp"
-#include "render/registry.hpp"
-#include "scene/scene_file.hpp"
 
 namespace {
 

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "raster/raster_testing.hpp"
+#include "support/raster_testing.hpp"
 
 namespace rise {
 namespace {

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "raster/polygon_clipping.hpp"
-#include "raster/raster_testing.hpp"
 #include "scene/shapes/box.hpp"
+#include "support/raster_testing.hpp"
 
 namespace rise {
 namespace {

@@ -1,7 +1,7 @@
 #include "raster/surface_shader.hpp"
 
 #include "raster/parallel_ranges.hpp"
-#include "scene/surface_mapping.hpp"
+#include "scene/textures/surface_mapping.hpp"
 #include "shading/phong.hpp"
 
 namespace rise {

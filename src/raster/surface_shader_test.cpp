@@ -4,11 +4,11 @@
 
 #include <map>
 
-#include "raster/raster_testing.hpp"
 #include "scene/shapes/convex_polygon.hpp"
 #include "scene/shapes/plane.hpp"
 #include "scene/shapes/sphere.hpp"
-#include "scene/texture.hpp"
+#include "scene/textures/texture.hpp"
+#include "support/raster_testing.hpp"
 
 namespace rise {
 namespace {

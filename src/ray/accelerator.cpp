@@ -12,19 +12,6 @@
 #endif
 
 namespace rise {
-std::string_view accelName(Accel accel) {
-  switch (accel) {
-    case Accel::None:
-      return "none";
-    case Accel::Spheres:
-      return "spheres";
-    case Accel::Bvh:
-      return "bvh";
-    case Accel::Embree:
-      return "embree";
-  }
-  return "?";
-}
 
 std::vector<Accel> availableAccels() {
 #ifdef RISE_HAS_EMBREE

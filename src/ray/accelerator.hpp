@@ -13,14 +13,10 @@
 #include <string_view>
 #include <vector>
 
+#include "render/render_settings.hpp"
 #include "scene/shape.hpp"
 
 namespace rise {
-
-enum class Accel { None, Spheres, Bvh, Embree };
-inline constexpr Accel kAllAccels[] = {Accel::None, Accel::Spheres, Accel::Bvh, Accel::Embree};
-
-std::string_view accelName(Accel accel);  // as on the command line: "bvh"
 
 // The structures this build can make: Embree only when it was found at build time.
 std::vector<Accel> availableAccels();

@@ -4,9 +4,9 @@
 #include <string>
 
 #include "core/color.hpp"
-#include "scene/bump_map.hpp"
-#include "scene/normal_map.hpp"
-#include "scene/texture.hpp"
+#include "scene/textures/bump_map.hpp"
+#include "scene/textures/normal_map.hpp"
+#include "scene/textures/texture.hpp"
 
 namespace rise {
 

@@ -4,7 +4,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/shapes/shape_testing.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {

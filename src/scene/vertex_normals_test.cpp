@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "scene/shapes/shape_testing.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 
-#include "scene/surface_mapping.hpp"
+#include "scene/textures/surface_mapping.hpp"
 
 namespace rise {
 

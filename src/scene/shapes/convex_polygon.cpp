@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "scene/shapes/plane.hpp"
-#include "scene/surface_mapping.hpp"
+#include "scene/textures/surface_mapping.hpp"
 
 namespace rise {
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "scene/shapes/shape_testing.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "scene/shapes/disk.hpp"
 #include "scene/shapes/quadratic.hpp"
-#include "scene/surface_mapping.hpp"
+#include "scene/textures/surface_mapping.hpp"
 
 namespace rise {
 

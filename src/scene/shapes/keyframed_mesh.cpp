@@ -5,7 +5,7 @@
 
 #include "scene/shapes/triangle.hpp"
 #include "scene/shapes/vertex_attributes.hpp"
-#include "scene/surface_mapping.hpp"
+#include "scene/textures/surface_mapping.hpp"
 
 namespace rise {
 

@@ -2,8 +2,8 @@
 
 #include <memory>
 
-#include "scene/projected_mapping.hpp"
 #include "scene/shape.hpp"
+#include "scene/textures/projected_mapping.hpp"
 
 namespace rise {
 

@@ -13,12 +13,12 @@
 #include "scene/shapes/convex_polygon.hpp"
 #include "scene/shapes/cylinder.hpp"
 #include "scene/shapes/plane.hpp"
-#include "scene/shapes/shape_testing.hpp"
 #include "scene/shapes/sphere.hpp"
 #include "scene/shapes/transformed_shape.hpp"
 #include "scene/shapes/triangle.hpp"
 #include "scene/shapes/triangle_mesh.hpp"
 #include "scene/transform.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {

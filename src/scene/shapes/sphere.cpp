@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "scene/shapes/quadratic.hpp"
-#include "scene/surface_mapping.hpp"
+#include "scene/textures/surface_mapping.hpp"
 
 namespace rise {
 

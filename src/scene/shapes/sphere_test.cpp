@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "scene/shapes/shape_testing.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {

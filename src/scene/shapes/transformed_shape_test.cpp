@@ -5,10 +5,10 @@
 #include <cmath>
 
 #include "scene/shapes/box.hpp"
-#include "scene/shapes/shape_testing.hpp"
 #include "scene/shapes/sphere.hpp"
 #include "scene/shapes/triangle_mesh.hpp"
 #include "scene/transform.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {

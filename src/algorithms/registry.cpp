@@ -1,0 +1,44 @@
+#include "algorithms/registry.hpp"
+
+#include <chrono>
+
+#include "raster/area_subdivision.hpp"
+#include "raster/depth_sort.hpp"
+#include "raster/scanline.hpp"
+#include "raster/z_buffer.hpp"
+#include "ray/distributed_ray_tracing.hpp"
+#include "ray/ray_tracing.hpp"
+
+namespace rise {
+
+std::span<const Renderer* const> allRenderers() {
+  static const DepthSortRenderer depthSort;
+  static const AreaSubdivisionRenderer areaSubdivision;
+  static const ZBufferRenderer zBuffer;
+  static const ScanlineRenderer scanline;
+  static const WhittedRayTracer rayTracing;
+  static const DistributedRayTracer distributedRayTracing;
+  static const Renderer* const table[] = {
+      &depthSort, &areaSubdivision, &zBuffer, &scanline, &rayTracing, &distributedRayTracing,
+  };
+  return table;
+}
+
+const Renderer* findRenderer(std::string_view name) {
+  for (const Renderer* renderer : allRenderers())
+    if (renderer->name() == name) return renderer;
+  return nullptr;
+}
+
+RenderResult renderTimed(const Renderer& renderer, const Scene& scene,
+                         const RenderSettings& settings, RenderObserver& observer) {
+  const auto start = std::chrono::steady_clock::now();
+  RenderResult result = renderer.render(scene, settings, observer);
+  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+  result.stats.add("render_seconds", seconds.count());
+  if (const double rays = result.stats.value("rays"); rays > 0.0)
+    result.stats.add("rays_per_second", rays / seconds.count());
+  return result;
+}
+
+}  // namespace rise

@@ -1,0 +1,284 @@
+#include "io/mesh_file.hpp"
+
+#include <assimp/config.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <array>
+#include <assimp/Importer.hpp>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <new>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "scene/vertex_normals.hpp"
+
+namespace rise {
+
+namespace {
+
+const std::string kFormatExamples = ".obj, .ply, .md2, .gltf, .glb, .off or .3ds";
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+// The file must exist, be a regular file that opens, and hold something.
+void checkReadable(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path))
+    throw MeshFileError("cannot open the file (" +
+                        std::make_error_code(std::errc::is_a_directory).message() + ")");
+  errno = 0;
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    const std::string cause =
+        errno != 0 ? std::generic_category().message(errno) : "unknown reason";
+    throw MeshFileError("cannot open the file (" + cause + ")");
+  }
+  if (file.peek() == std::ifstream::traits_type::eof()) throw MeshFileError("the file is empty");
+}
+
+void checkFormatIsSupported(const std::filesystem::path& path, const Assimp::Importer& importer) {
+  const std::string extension = path.extension().string();
+  if (extension.empty())
+    throw MeshFileError("the file name has no extension to tell its format; expected " +
+                        kFormatExamples);
+  if (!importer.IsExtensionSupported(extension))
+    throw MeshFileError("'" + extension + "' is not a model format that RISE reads; expected " +
+                        kFormatExamples);
+}
+
+// Assimp 5.2 loops forever on a PLY file that ends inside its header, so such
+// a file is refused before Assimp sees it; a file that is not PLY at all is
+// left to Assimp to name.
+void checkPlyHeaderEnds(const std::filesystem::path& path) {
+  constexpr std::size_t kLongestHeader = 1 << 20;
+  std::ifstream file(path, std::ios::binary);
+  std::string start(kLongestHeader, '\0');
+  file.read(start.data(), static_cast<std::streamsize>(start.size()));
+  start.resize(static_cast<std::size_t>(file.gcount()));
+  if (lowercase(start.substr(0, 3)) == "ply" && start.find("end_header") == std::string::npos)
+    throw MeshFileError("the PLY header is cut short: it has no 'end_header' line");
+}
+
+// Assimp's messages, on one line, with single spaces.
+std::string tidied(const std::string& message) {
+  std::string result;
+  for (char c : message) {
+    const bool space = std::isspace(static_cast<unsigned char>(c)) != 0;
+    if (space && (result.empty() || result.back() == ' ')) continue;
+    result.push_back(space ? ' ' : c);
+  }
+  while (!result.empty() && result.back() == ' ') result.pop_back();
+  return result.empty() ? "the model loader failed without saying why" : result;
+}
+
+const aiScene& readWithAssimp(Assimp::Importer& importer, const std::filesystem::path& path,
+                              int md2Keyframe) {
+  importer.SetPropertyInteger(AI_CONFIG_IMPORT_MD2_KEYFRAME, md2Keyframe);
+  // Validation comes first, so that no later step reads a corrupt index;
+  // invalid normals (all zero, NaN) are dropped, to be computed like missing
+  // ones. RISE computes those itself: Assimp's smoothing cannot split a
+  // vertex that faces share across a crease (the corners of an OFF box).
+  unsigned int steps =
+      aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_FindInvalidData;
+  if (!isMd2File(path)) steps |= aiProcess_JoinIdenticalVertices;
+  const aiScene* scene = importer.ReadFile(path.string(), steps);
+  if (scene == nullptr) throw MeshFileError(tidied(importer.GetErrorString()));
+  return *scene;
+}
+
+Vec3 toVec3(const aiVector3D& v) { return Vec3(v.x, v.y, v.z); }
+
+// Assimp's matrices are row-major, glm's column-major.
+Mat4 toMat4(const aiMatrix4x4& m) {
+  Mat4 result;
+  for (int row = 0; row < 4; ++row)
+    for (int column = 0; column < 4; ++column) result[column][row] = m[row][column];
+  return result;
+}
+
+bool isFinite(const Vec3& v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+// One Assimp mesh in its own space: its triangles (points and lines are left
+// out) and a unit normal at each vertex: the file's, zero where one of them is
+// unusable, or computed when the file has none.
+MeshGeometry geometryOf(const aiMesh& mesh) {
+  MeshGeometry geometry;
+  for (unsigned int i = 0; i < mesh.mNumVertices; ++i) {
+    geometry.positions.push_back(toVec3(mesh.mVertices[i]));
+    if (mesh.HasNormals()) {
+      const Vec3 normal = toVec3(mesh.mNormals[i]);
+      const float length = glm::length(normal);
+      geometry.normals.push_back(isFinite(normal) && length > 0.0f ? normal / length : Vec3(0.0f));
+    }
+    if (mesh.HasTextureCoords(0))
+      geometry.uvs.emplace_back(mesh.mTextureCoords[0][i].x, mesh.mTextureCoords[0][i].y);
+  }
+  for (unsigned int i = 0; i < mesh.mNumFaces; ++i) {
+    const aiFace& face = mesh.mFaces[i];
+    if (face.mNumIndices != 3) continue;
+    std::array<int, 3> triangle;
+    for (int corner = 0; corner < 3; ++corner) {
+      if (face.mIndices[corner] >= mesh.mNumVertices)
+        throw MeshFileError("a face refers to a vertex that the mesh does not have");
+      triangle[corner] = static_cast<int>(face.mIndices[corner]);
+    }
+    geometry.triangles.push_back(triangle);
+  }
+  return mesh.HasNormals() ? geometry : withVertexNormals(geometry, kCreaseAngleDegrees);
+}
+
+// Appends the meshes of `node` and of the nodes under it, each placed by the
+// transforms from the root down to its node.
+void appendNode(const aiScene& scene, const aiNode& node, const Mat4& parentToFile,
+                MeshGeometry& model) {
+  const Mat4 nodeToFile = parentToFile * toMat4(node.mTransformation);
+  for (unsigned int i = 0; i < node.mNumMeshes; ++i) {
+    if (node.mMeshes[i] >= scene.mNumMeshes)
+      throw MeshFileError("a node refers to a mesh that the file does not have");
+    append(model, transformed(geometryOf(*scene.mMeshes[node.mMeshes[i]]), nodeToFile));
+  }
+  for (unsigned int i = 0; i < node.mNumChildren; ++i)
+    appendNode(scene, *node.mChildren[i], nodeToFile, model);
+}
+
+MeshGeometry readModel(const std::filesystem::path& path, int md2Keyframe) {
+  checkReadable(path);
+  Assimp::Importer importer;
+  checkFormatIsSupported(path, importer);
+  if (lowercase(path.extension().string()) == ".ply") checkPlyHeaderEnds(path);
+  // The header check says more about a cut MD2 file than Assimp does.
+  if (isMd2File(path)) md2KeyframeCount(path);
+  const aiScene& scene = readWithAssimp(importer, path, md2Keyframe);
+  MeshGeometry model;
+  if (scene.mRootNode != nullptr) appendNode(scene, *scene.mRootNode, Mat4(1.0f), model);
+  if (model.triangles.empty()) throw MeshFileError("the file has no triangles");
+  if (!std::all_of(model.positions.begin(), model.positions.end(), isFinite))
+    throw MeshFileError("a vertex has a coordinate that is not a finite number");
+  return model;
+}
+
+// MD2 stores little-endian 32-bit integers, whatever the machine.
+std::int32_t littleEndianInt(const unsigned char* bytes) {
+  return static_cast<std::int32_t>(
+      static_cast<std::uint32_t>(bytes[0]) | static_cast<std::uint32_t>(bytes[1]) << 8 |
+      static_cast<std::uint32_t>(bytes[2]) << 16 | static_cast<std::uint32_t>(bytes[3]) << 24);
+}
+
+// The skin names of an MD2 header (64-byte strings), or none when the file
+// is too short to hold them.
+std::vector<std::string> md2SkinNames(const std::filesystem::path& path) {
+  constexpr int kHeaderSize = 68, kSkinNameSize = 64;
+  constexpr int kSkinCount = 5, kSkinsOffset = 11;
+  std::ifstream file(path, std::ios::binary);
+  std::array<unsigned char, kHeaderSize> header{};
+  if (!file.read(reinterpret_cast<char*>(header.data()), kHeaderSize)) return {};
+  const std::int32_t count = littleEndianInt(header.data() + 4 * kSkinCount);
+  file.seekg(littleEndianInt(header.data() + 4 * kSkinsOffset));
+  std::vector<std::string> names;
+  std::array<char, kSkinNameSize> name{};
+  for (std::int32_t i = 0; i < count && file.read(name.data(), kSkinNameSize); ++i)
+    names.emplace_back(name.data(), strnlen(name.data(), kSkinNameSize));
+  return names;
+}
+
+}  // namespace
+
+MeshGeometry loadMeshFile(const std::filesystem::path& path, int md2Keyframe) {
+  // Assimp reports its failures by returning no scene, but a corrupt count can
+  // still make it ask for more memory than there is.
+  try {
+    return readModel(path, md2Keyframe);
+  } catch (const MeshFileError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw MeshFileError("reading it needs more memory than there is; is the file corrupt?");
+  } catch (const std::exception& error) {
+    throw MeshFileError(tidied(error.what()));
+  }
+}
+
+std::optional<std::filesystem::path> findMd2Skin(const std::filesystem::path& model) {
+  const std::filesystem::path folder = model.parent_path();
+  std::vector<std::filesystem::path> candidates;
+  for (const std::string& name : md2SkinNames(model))
+    candidates.push_back(folder / std::filesystem::path(name).filename());
+  candidates.push_back(folder / (model.stem().string() + ".pcx"));
+  for (const std::filesystem::path& candidate : candidates)
+    if (std::filesystem::is_regular_file(candidate)) return candidate;
+  std::vector<std::filesystem::path> images;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(
+           folder.empty() ? std::filesystem::path(".") : folder, error))
+    if (entry.is_regular_file() && lowercase(entry.path().extension().string()) == ".pcx")
+      images.push_back(entry.path());
+  if (images.size() == 1) return images.front();
+  return std::nullopt;
+}
+
+bool isMd2File(const std::filesystem::path& path) {
+  return lowercase(path.extension().string()) == ".md2";
+}
+
+int md2KeyframeCount(const std::filesystem::path& path) {
+  // The header is 17 little-endian integers: the ident "IDP2", the version 8,
+  // the skin's size, a keyframe's size in bytes, the counts of skins,
+  // vertices, texture coordinates, triangles, GL commands and keyframes, then
+  // the offsets of each part.
+  constexpr int kHeaderSize = 68;
+  constexpr int kVersion = 1, kFrameSize = 4, kFrameCount = 10, kFramesOffset = 14;
+  checkReadable(path);
+  std::ifstream file(path, std::ios::binary);
+  std::array<unsigned char, kHeaderSize> header{};
+  file.read(reinterpret_cast<char*>(header.data()), kHeaderSize);
+  if (file.gcount() < kHeaderSize)
+    throw MeshFileError(
+        "the file is too short for an MD2 header: " + std::to_string(file.gcount()) + " of " +
+        std::to_string(kHeaderSize) + " bytes");
+  const auto field = [&](int index) { return littleEndianInt(header.data() + 4 * index); };
+  if (std::memcmp(header.data(), "IDP2", 4) != 0)
+    throw MeshFileError("not an MD2 model: it does not start with 'IDP2'");
+  if (field(kVersion) != 8)
+    throw MeshFileError("MD2 version " + std::to_string(field(kVersion)) + "; expected 8");
+  const std::int64_t frames = field(kFrameCount);
+  const std::int64_t framesOffset = field(kFramesOffset);
+  const std::int64_t frameSize = field(kFrameSize);
+  if (frames < 1) throw MeshFileError("the MD2 header gives no keyframes");
+  if (framesOffset < kHeaderSize || frameSize <= 0)
+    throw MeshFileError("the MD2 header is corrupt: its keyframes start at byte " +
+                        std::to_string(framesOffset) + " and take " + std::to_string(frameSize) +
+                        " bytes each");
+  const std::int64_t framesEnd = framesOffset + frames * frameSize;
+  const auto size = static_cast<std::int64_t>(std::filesystem::file_size(path));
+  if (framesEnd > size)
+    throw MeshFileError("the file is cut short: its " + std::to_string(frames) +
+                        " keyframes should end at byte " + std::to_string(framesEnd) +
+                        ", but it has " + std::to_string(size) + " bytes");
+  return static_cast<int>(frames);
+}
+
+std::pair<MeshGeometry, MeshGeometry> loadMd2Keyframes(const std::filesystem::path& path, int first,
+                                                       int second) {
+  std::pair<MeshGeometry, MeshGeometry> keyframes{loadMeshFile(path, first),
+                                                  loadMeshFile(path, second)};
+  const auto& [start, end] = keyframes;
+  if (start.triangles != end.triangles || start.positions.size() != end.positions.size() ||
+      start.normals.size() != end.normals.size())
+    throw MeshFileError("keyframes " + std::to_string(first) + " and " + std::to_string(second) +
+                        " do not share their triangles");
+  return keyframes;
+}
+
+}  // namespace rise

@@ -1,0 +1,33 @@
+// The `mesh` of a scene file's objects: a model file (MD2, OBJ, PLY, glTF,
+// OFF, 3DS... through Assimp) or triangles written out in the scene.
+//
+//   mesh: {file: models/tris.md2, frame: 40}      one keyframe of an MD2 model
+//   mesh: {file: models/tris.md2, frames: [40, 41]}  two, across the shutter
+//   mesh: {vertices: [[x, y, z], ...], faces: [[0, 1, 2], ...]}
+//
+// A file's path is relative to the scene file's folder.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "io/yaml_reader.hpp"
+#include "scene/material.hpp"
+#include "scene/shape.hpp"
+
+namespace rise {
+
+// The mesh, its vertices in its own space taking the object's `mapping` (so
+// that the texture moves with it), then placed in the world.
+std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4& worldFromObject,
+                                const std::filesystem::path& sceneDirectory);
+
+// The material an MD2 model wears: its own when that has a texture; else the
+// same again, under the name "<material> with <skin>", with the model's skin
+// (findMd2Skin) as its texture, added to `materials` once and shared by every
+// model that wears the same skin.
+int withMd2Skin(const CheckedMap& mesh, int material, std::vector<Material>& materials,
+                const std::filesystem::path& sceneDirectory);
+
+}  // namespace rise

@@ -1,0 +1,307 @@
+#include "io/scene_file.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "io/image_io.hpp"
+#include "io/shape_reader.hpp"
+#include "io/texture_reader.hpp"
+#include "io/yaml_reader.hpp"
+
+namespace rise {
+
+namespace {
+
+// How close to parallel the view direction and the up vector may be (the
+// sine of the angle between them) before the camera has no defined "right".
+constexpr float kParallelSine = 1e-6f;
+
+SamplePattern readPattern(const Field& field) {
+  return readChoice<SamplePattern>(field, {{"none", SamplePattern::None},
+                                           {"regular", SamplePattern::Regular},
+                                           {"jittered", SamplePattern::Jittered},
+                                           {"random", SamplePattern::Random},
+                                           {"adaptive", SamplePattern::Adaptive}});
+}
+
+FilterKind readFilter(const Field& field) {
+  return readChoice<FilterKind>(
+      field,
+      {{"box", FilterKind::Box}, {"tent", FilterKind::Tent}, {"gaussian", FilterKind::Gaussian}});
+}
+
+PixelSampling readSampling(const CheckedMap& image, const Field& imageField) {
+  const std::optional<Field> samplesField = image.optional("samples");
+  const std::optional<Field> patternField = image.optional("pattern");
+  std::optional<int> samples;
+  std::optional<SamplePattern> pattern;
+  if (samplesField) samples = readPositiveWholeNumber(*samplesField);
+  if (patternField) pattern = readPattern(*patternField);
+  PixelSampling sampling = chooseSampling(PixelSampling{}, samples, pattern);
+  readIfPresent(image, "filter", sampling.filter, readFilter);
+  readIfPresent(image, "adaptive_threshold", sampling.adaptiveThreshold, readPositive);
+  if (const std::string problem = samplingProblem(sampling); !problem.empty())
+    failAt((samplesField   ? *samplesField
+            : patternField ? *patternField
+                           : imageField)
+               .mark,
+           "image has " + problem);
+  return sampling;
+}
+
+ImageSpec readImage(const Field& field) {
+  const CheckedMap image(
+      field, "image",
+      {"width", "height", "background", "samples", "pattern", "filter", "adaptive_threshold"});
+  ImageSpec spec;
+  readIfPresent(image, "width", spec.width, readPositiveWholeNumber);
+  readIfPresent(image, "height", spec.height, readPositiveWholeNumber);
+  readIfPresent(image, "background", spec.background, readColor);
+  spec.sampling = readSampling(image, field);
+  return spec;
+}
+
+void checkUpIsAcrossView(const Camera& camera, const std::optional<Field>& up,
+                         const Field& cameraField) {
+  const Vec3 view = glm::normalize(camera.lookAt - camera.position);
+  if (glm::length(glm::cross(view, glm::normalize(camera.up))) > kParallelSine) return;
+  if (up)
+    failExpected(*up, "a direction across the view from 'position' to 'look_at', not along it");
+  failAt(cameraField.mark,
+         "camera looks straight along the default 'up' [0, 1, 0]; expected an 'up' across the "
+         "view from 'position' to 'look_at'");
+}
+
+Camera readCamera(const Field& field) {
+  const CheckedMap map(
+      field, "camera",
+      {"position", "look_at", "up", "fov", "aperture", "focal_distance", "shutter"});
+  Camera camera;
+  camera.position = readVec3(map.required("position"));
+  const Field lookAt = map.required("look_at");
+  camera.lookAt = readVec3(lookAt);
+  if (!(glm::length(camera.lookAt - camera.position) > 0.0f))
+    failAt(lookAt.mark,
+           "'look_at' in camera is the same point as 'position'; expected a point for the camera "
+           "to look towards");
+  const std::optional<Field> up = map.optional("up");
+  if (up) camera.up = readDirection(*up);
+  checkUpIsAcrossView(camera, up, field);
+  if (const std::optional<Field> fov = map.optional("fov")) {
+    camera.fovDegrees = readNumber(*fov);
+    if (camera.fovDegrees <= 0.0f || camera.fovDegrees >= 180.0f)
+      failExpected(*fov, "an angle in degrees > 0 and < 180");
+  }
+  readIfPresent(map, "aperture", camera.aperture, readNonNegative);
+  readIfPresent(map, "focal_distance", camera.focalDistance, readPositive);
+  if (const std::optional<Field> shutter = map.optional("shutter")) {
+    const std::vector<Field> times =
+        readList(*shutter, "a list of 2 times [open, close]", "a time of 'shutter'", 2, 2);
+    camera.shutterOpen = readNumber(times[0]);
+    camera.shutterClose = readNumber(times[1]);
+    if (camera.shutterClose < camera.shutterOpen)
+      failExpected(times[1], "a closing time no earlier than the opening time");
+  }
+  return camera;
+}
+
+Color readLightColor(const CheckedMap& light) {
+  Color color(1.0f);
+  readIfPresent(light, "color", color, readColor);
+  return color;
+}
+
+// Each light reader builds its light from its properties.
+using LightReader = std::unique_ptr<Light> (*)(const CheckedMap& properties, const Color& color);
+
+struct LightKind {
+  std::string name;
+  std::vector<std::string> keys;
+  LightReader read;
+};
+
+const std::vector<LightKind>& lightKinds() {
+  static const std::vector<LightKind> kinds{
+      {"point",
+       {"position"},
+       [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
+         return std::make_unique<PointLight>(readVec3(light.required("position")), color);
+       }},
+      {"directional",
+       {"direction"},
+       [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
+         return std::make_unique<DirectionalLight>(readDirection(light.required("direction")),
+                                                   color);
+       }},
+      {"rect",
+       {"corner", "edge1", "edge2"},
+       [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
+         const Vec3 corner = readVec3(light.required("corner"));
+         const Vec3 edge1 = readDirection(light.required("edge1"));
+         return std::make_unique<RectLight>(corner, edge1, readDirection(light.required("edge2")),
+                                            color);
+       }},
+      {"disk",
+       {"center", "normal", "radius"},
+       [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
+         const Vec3 center = readVec3(light.required("center"));
+         const Vec3 normal = readDirection(light.required("normal"));
+         return std::make_unique<DiskLight>(center, normal, readPositive(light.required("radius")),
+                                            color);
+       }},
+      {"sphere",
+       {"center", "radius"},
+       [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
+         const Vec3 center = readVec3(light.required("center"));
+         return std::make_unique<SphereLight>(center, readPositive(light.required("radius")),
+                                              color);
+       }},
+  };
+  return kinds;
+}
+
+std::unique_ptr<Light> readLight(const Field& item) {
+  std::vector<std::string> kindNames;
+  for (const LightKind& kind : lightKinds()) kindNames.push_back(kind.name);
+  const MapEntry entry = readKindAndProperties(item, "light type", kindNames);
+  const LightKind& kind = *std::find_if(lightKinds().begin(), lightKinds().end(),
+                                        [&](const LightKind& k) { return k.name == entry.key; });
+  const std::string name = entry.key + " light";
+  std::vector<std::string> keys = kind.keys;
+  keys.push_back("color");
+  const CheckedMap light(makeField(entry.value, name, entry.keyMark), name, keys);
+  return kind.read(light, readLightColor(light));
+}
+
+Material readMaterial(const MapEntry& entry, const std::filesystem::path& sceneDirectory) {
+  const std::string name = "material '" + entry.key + "'";
+  const CheckedMap map(makeField(entry.value, name, entry.keyMark), name,
+                       {"color", "texture", "bump", "normal_map", "ka", "kd", "ks", "ks_texture",
+                        "n", "reflection", "transmission", "ior", "roughness"});
+  Material material;
+  material.name = entry.key;
+  readIfPresent(map, "color", material.color, readColor);
+  if (const std::optional<Field> texture = map.optional("texture"))
+    material.texture = readTexture(*texture, sceneDirectory);
+  if (const std::optional<Field> bump = map.optional("bump"))
+    material.bump = readBump(*bump, sceneDirectory);
+  if (const std::optional<Field> normalMap = map.optional("normal_map"))
+    material.normalMap = readNormalMap(*normalMap, sceneDirectory);
+  readIfPresent(map, "ka", material.ka, readNonNegative);
+  readIfPresent(map, "kd", material.kd, readNonNegative);
+  readIfPresent(map, "ks", material.ks, readNonNegative);
+  if (const std::optional<Field> ksTexture = map.optional("ks_texture"))
+    material.ksTexture = readTexture(*ksTexture, sceneDirectory, Encoding::Linear);
+  readIfPresent(map, "n", material.n, readNonNegative);
+  readIfPresent(map, "reflection", material.reflection, readNonNegative);
+  readIfPresent(map, "transmission", material.transmission, readNonNegative);
+  readIfPresent(map, "ior", material.ior, readPositive);
+  readIfPresent(map, "roughness", material.roughness, readNonNegative);
+  return material;
+}
+
+std::vector<Material> readMaterials(const Field& field,
+                                    const std::filesystem::path& sceneDirectory) {
+  std::vector<Material> materials;
+  for (const MapEntry& entry :
+       readMap(field, "a map from material names to materials", "'materials'"))
+    materials.push_back(readMaterial(entry, sceneDirectory));
+  return materials;
+}
+
+Scene readScene(const YAML::Node& root, std::string source) {
+  const CheckedMap map(Field{root, "the scene", root.Mark()}, "the scene",
+                       {"image", "camera", "ambient", "lights", "materials", "objects"});
+  Scene scene;
+  scene.source = std::move(source);
+  readIfPresent(map, "image", scene.image, readImage);
+  scene.camera = readCamera(map.required("camera"));
+  readIfPresent(map, "ambient", scene.ambient, readColor);
+  if (const std::optional<Field> lights = map.optional("lights")) {
+    for (const Field& item : readList(*lights, "a list of lights", "an item of 'lights'"))
+      scene.lights.push_back(readLight(item));
+  }
+  const std::filesystem::path sceneDirectory = std::filesystem::path(scene.source).parent_path();
+  if (const std::optional<Field> materials = map.optional("materials"))
+    scene.materials = readMaterials(*materials, sceneDirectory);
+  for (const Field& item :
+       readList(map.required("objects"), "a list of objects", "an item of 'objects'"))
+    scene.shapes.push_back(readObject(item, scene.materials, sceneDirectory));
+  return scene;
+}
+
+// yaml-cpp's wording for the syntax errors people make most, said plainly.
+std::string explainSyntaxError(const YAML::ParserException& error, std::string_view text) {
+  if (error.msg == YAML::ErrorMsg::END_OF_SEQ_FLOW)
+    return "a list opened with '[' is not closed with ']'";
+  if (error.msg == YAML::ErrorMsg::END_OF_MAP_FLOW)
+    return "a map opened with '{' is not closed with '}'";
+  if (error.msg == YAML::ErrorMsg::FLOW_END && error.mark.pos >= 0 &&
+      static_cast<std::size_t>(error.mark.pos) < text.size())
+    return std::string("unexpected '") + text[error.mark.pos] +
+           "'; check that the brackets before it are closed in order";
+  if (error.msg == YAML::ErrorMsg::MAP_VALUE)
+    return "unexpected ':' (wrong indentation, a tab, or a value with ': ' that needs quotes?)";
+  if (error.msg == YAML::ErrorMsg::TAB_IN_INDENTATION)
+    return "a tab in the indentation; YAML indents with spaces";
+  return error.msg;
+}
+
+SceneError errorAt(const std::string& source, const YAML::Mark& mark, const std::string& message) {
+  return SceneError(source, mark.line + 1, mark.column + 1, message);
+}
+
+}  // namespace
+
+Scene loadScene(std::string_view text, std::string sourceName) {
+  try {
+    const std::vector<YAML::Node> documents = YAML::LoadAll(std::string(text));
+    if (documents.empty() || documents[0].IsNull())
+      throw SceneError(sourceName,
+                       "the scene file is empty; expected at least 'camera' and 'objects'");
+    // An empty document after the scene, as an editor may leave after a
+    // final '---', says nothing and is harmless.
+    const auto second = std::find_if(documents.begin() + 1, documents.end(),
+                                     [](const YAML::Node& document) { return !document.IsNull(); });
+    if (second != documents.end())
+      failAt(second->Mark(),
+             "a second YAML document (after '---'); expected the scene file to hold one scene");
+    return readScene(documents[0], sourceName);
+  } catch (const YAML::ParserException& error) {
+    throw errorAt(sourceName, error.mark, "invalid YAML: " + explainSyntaxError(error, text));
+  } catch (const YamlValueError& error) {
+    throw errorAt(sourceName, error.mark(), error.what());
+  }
+}
+
+Scene loadSceneFile(const std::filesystem::path& path) {
+  // A directory opens as a file stream on POSIX systems and only fails when read.
+  if (std::filesystem::is_directory(path))
+    throw SceneError(path.string(), "cannot open the scene file (" +
+                                        std::make_error_code(std::errc::is_a_directory).message() +
+                                        ")");
+  errno = 0;
+  std::ifstream file(path, std::ios::binary);
+  if (!file) {
+    const std::string cause =
+        errno != 0 ? std::generic_category().message(errno) : "unknown reason";
+    throw SceneError(path.string(), "cannot open the scene file (" + cause + ")");
+  }
+  std::ostringstream text;
+  text << file.rdbuf();
+  if (file.bad()) throw SceneError(path.string(), "cannot read the scene file");
+  return loadScene(text.str(), path.string());
+}
+
+}  // namespace rise

@@ -1,0 +1,27 @@
+// The `objects` of a scene file: each a shape with its material, and its
+// placement, motion and texture mapping.
+//
+//   - sphere: {center: [0, 1, 0], radius: 1, material: red,
+//              transform: {rotate: [0, 30, 0]}, motion: {translate: [0.2, 0, 0]},
+//              mapping: spherical}
+//
+// Shapes: plane, sphere, box, cylinder, cone, triangle, polygon and mesh
+// (mesh_reader.hpp).
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "io/yaml_reader.hpp"
+#include "scene/material.hpp"
+#include "scene/shape.hpp"
+
+namespace rise {
+
+// The shape of one item of `objects`. An MD2 model may add the material that
+// wears its skin to `materials` (withMd2Skin).
+std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& materials,
+                                  const std::filesystem::path& sceneDirectory);
+
+}  // namespace rise

@@ -1,0 +1,19 @@
+#include "render/render_settings.hpp"
+
+namespace rise {
+
+std::string_view accelName(Accel accel) {
+  switch (accel) {
+    case Accel::None:
+      return "none";
+    case Accel::Spheres:
+      return "spheres";
+    case Accel::Bvh:
+      return "bvh";
+    case Accel::Embree:
+      return "embree";
+  }
+  return "?";
+}
+
+}  // namespace rise

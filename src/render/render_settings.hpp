@@ -1,0 +1,46 @@
+// How to render, whatever the algorithm: the settings every Renderer is
+// given. The image size and its sampling come from the scene unless a front
+// end overrides them (algorithms/render_settings_builder.hpp).
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+#include "core/sampling.hpp"
+#include "scene/tessellation.hpp"
+
+namespace rise {
+
+// How rays find what they hit (ray/accelerator.hpp): every ray against every
+// shape, Ritter's bounding spheres, a bounding volume hierarchy, or Intel's
+// Embree where the build has it.
+enum class Accel { None, Spheres, Bvh, Embree };
+inline constexpr Accel kAllAccels[] = {Accel::None, Accel::Spheres, Accel::Bvh, Accel::Embree};
+std::string_view accelName(Accel accel);  // as on the command line: "bvh"
+
+// How the visible-surface algorithms apply the Phong model to their polygons:
+// once per face, at the vertices with the colours interpolated (Gouraud), or
+// at every pixel with the normals interpolated (Phong).
+enum class Shading { Flat, Gouraud, Phong };
+
+// How to render, whatever the algorithm. The image size comes from the scene
+// unless the command line overrides it.
+struct RenderSettings {
+  int width = 640;
+  int height = 480;
+  int maxDepth = 5;          // longest path of a ray tracer: the primary ray is level 1
+  int threads = 0;           // 0: one per hardware thread
+  PixelSampling sampling;    // samples per pixel, their pattern, the reconstruction filter
+  std::uint64_t seed = 0;    // the same seed gives the same image; another, other noise
+  Accel accel = Accel::Bvh;  // the acceleration structure of the ray tracers
+  // The visible-surface algorithms (raster/): their shading, whether they
+  // drop the back faces of solids, how finely they cut curved surfaces into
+  // polygons (a circle into 4 * tessellation segments), and the side of the
+  // square that stands in for an infinite plane.
+  Shading shading = Shading::Phong;
+  bool backfaceCulling = true;
+  int tessellation = kDefaultTessellationLevel;
+  float planeSize = kDefaultPlaneSize;
+};
+
+}  // namespace rise
