@@ -9,6 +9,7 @@
 
 #include "algorithms/registry.hpp"
 #include "io/scene_file.hpp"
+#include "support/raster_testing.hpp"
 
 namespace rise {
 namespace {
@@ -182,7 +183,8 @@ TEST(AntiAliasing, ShrinksTheErrorOnASlantedEdge) {
 // The visible-surface algorithms anti-alias by accumulation: whole frames
 // at jittered sub-pixel offsets, filtered like the ray tracers' samples.
 TEST(AntiAliasing, AppliesToTheVisibleSurfaceAlgorithms) {
-  for (const char* algorithm : {"z-buffer", "scanline", "depth-sort", "area-subdivision"}) {
+  for (const std::string_view name : raster_testing::visibleSurfaceAlgorithms()) {
+    const std::string algorithm(name);
     const double aliased = rmse(render(slantedEdge(), algorithm, {}).image, slantedEdgeReference());
     const RenderResult smooth = render(slantedEdge(), algorithm, jittered(16));
     EXPECT_LT(rmse(smooth.image, slantedEdgeReference()), 0.4 * aliased) << algorithm;

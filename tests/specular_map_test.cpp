@@ -63,7 +63,7 @@ TEST(SpecularMap, BlackKillsTheHighlightAndWhiteKeepsItInEveryAlgorithm) {
   const Scene red = highlightScene("{checker: {colors: [[1, 0, 0], [1, 0, 0]]}}");
   for (const std::string_view algorithm : {"ray-tracing", "z-buffer", "scanline"}) {
     for (const Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
-      RenderSettings settings = raster_testing::settingsFor(plain);
+      RenderSettings settings = settingsFor(plain);
       settings.shading = shading;
       const Image highlight = raster_testing::render(algorithm, plain, settings).image;
       ASSERT_GT(brightest(highlight, 0), 0.3f) << algorithm;

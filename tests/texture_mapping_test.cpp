@@ -247,7 +247,7 @@ class MappedScene : public TemporaryFolderTest {
     ASSERT_NEAR(uv.x * 8.0f, static_cast<float>(column) + 0.5f, 1e-3f) << "not a texel's centre";
     ASSERT_NEAR((1.0f - uv.y) * 4.0f, static_cast<float>(row) + 0.5f, 1e-3f);
     const Color expected = texels_.at(column, row);
-    const RenderSettings settings = raster_testing::settingsFor(scene);
+    const RenderSettings settings = settingsFor(scene);
     const Image rays = raster_testing::render("ray-tracing", scene, settings).image;
     const int x = settings.width / 2, y = settings.height / 2;
     EXPECT_LT(glm::length(rays.at(x, y) - expected), 1e-3f) << "ray-tracing";

@@ -54,7 +54,7 @@ TEST(TexturedImage, PutsTheSpheresCheckerCornerWhereTheMappingSays) {
   // to its top left u < 1/4 and v > 1/2, the even square (0, 2).
   const Scene scene = checkerScene("{position: [0, 0, -5], look_at: [0, 0, 0], fov: 30}", "0.25",
                                    "sphere: {center: [0, 0, 0], radius: 1, material: checker}");
-  RenderSettings settings = raster_testing::settingsFor(scene);
+  RenderSettings settings = settingsFor(scene);
   expectCornerAtTheCentre(raster_testing::render("ray-tracing", scene, settings).image, kEven);
   expectCornerAtTheCentre(raster_testing::render("z-buffer", scene, settings).image, kEven);
 }
@@ -65,7 +65,7 @@ TEST(TexturedImage, PutsThePlanesCheckerCornerWhereTheMappingSays) {
   const Scene scene =
       checkerScene("{position: [0, 3, -4], look_at: [0, 0, 0], fov: 40}", "1",
                    "plane: {point: [0, 0, 0], normal: [0, 1, 0], material: checker}");
-  RenderSettings settings = raster_testing::settingsFor(scene);
+  RenderSettings settings = settingsFor(scene);
   expectCornerAtTheCentre(raster_testing::render("ray-tracing", scene, settings).image, kOdd);
   expectCornerAtTheCentre(raster_testing::render("z-buffer", scene, settings).image, kOdd);
 }
@@ -78,7 +78,7 @@ TEST(TexturedImage, KeepsAFloorsCheckerLinesStraightInEveryAlgorithm) {
   const Scene scene = checkerScene(
       "{position: [0, 1, -6], look_at: [0, 0, 4], fov: 50}", "0.125",
       "polygon: {vertices: [[-4, 0, -4], [4, 0, -4], [4, 0, 12], [-4, 0, 12]], material: checker}");
-  RenderSettings settings = raster_testing::settingsFor(scene);
+  RenderSettings settings = settingsFor(scene);
   const Image rays = raster_testing::render("ray-tracing", scene, settings).image;
   for (std::string_view algorithm : raster_testing::kAlgorithms) {
     const Image drawn = raster_testing::render(algorithm, scene, settings).image;
@@ -111,7 +111,7 @@ Scene bumpScene(bool bumped) {
 
 TEST(TexturedImage, ABumpMapChangesShadingButNotSilhouettesOrShadows) {
   const Scene smooth = bumpScene(false), bumped = bumpScene(true);
-  const RenderSettings settings = raster_testing::settingsFor(smooth);
+  const RenderSettings settings = settingsFor(smooth);
   for (std::string_view algorithm : {"ray-tracing", "z-buffer"}) {
     const RenderResult plain = raster_testing::render(algorithm, smooth, settings);
     const RenderResult tilted = raster_testing::render(algorithm, bumped, settings);

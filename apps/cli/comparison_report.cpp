@@ -76,7 +76,7 @@ std::string csv(const std::vector<ComparedRender>& renders, const std::vector<st
   for (const std::string& name : names) out << "," << name;
   out << "\n";
   for (const ComparedRender& render : renders) {
-    out << render.algorithm;
+    out << std::string(render.algorithm->name);
     for (const std::string& name : names) out << "," << cell(render.result.stats, name);
     out << "\n";
   }
@@ -87,7 +87,8 @@ std::string markdown(const std::string& sceneName, const std::vector<ComparedRen
                      const std::vector<std::string>& names) {
   std::ostringstream out;
   out << "# " << sceneName << "\n\n| |";
-  for (const ComparedRender& render : renders) out << " " << render.algorithm << " |";
+  for (const ComparedRender& render : renders)
+    out << " " << std::string(render.algorithm->name) << " |";
   out << "\n|---|";
   for (std::size_t i = 0; i < renders.size(); ++i) out << "---:|";
   out << "\n";
@@ -113,11 +114,11 @@ std::string timeChart(const std::vector<ComparedRender>& renders) {
     const double seconds = renders[i].result.stats.value("render_seconds");
     const double width = longest > 0.0 ? kBarWidth * seconds / longest : 0.0;
     const std::size_t y = i * kBarHeight;
-    out << "<text x=\"0\" y=\"" << y + 15 << "\">" << escapeHtml(renders[i].algorithm)
-        << "</text><rect x=\"" << kLabelWidth << "\" y=\"" << y + 3 << "\" width=\"" << width
-        << "\" height=\"" << kBarHeight - 6 << "\" fill=\"#4a7fb5\"/><text x=\""
-        << kLabelWidth + width + 6 << "\" y=\"" << y + 15 << "\">" << formatNumber(seconds)
-        << " s</text>\n";
+    out << "<text x=\"0\" y=\"" << y + 15 << "\">"
+        << escapeHtml(std::string(renders[i].algorithm->name)) << "</text><rect x=\"" << kLabelWidth
+        << "\" y=\"" << y + 3 << "\" width=\"" << width << "\" height=\"" << kBarHeight - 6
+        << "\" fill=\"#4a7fb5\"/><text x=\"" << kLabelWidth + width + 6 << "\" y=\"" << y + 15
+        << "\">" << formatNumber(seconds) << " s</text>\n";
   }
   out << "</svg>\n";
   return out.str();
@@ -135,15 +136,17 @@ std::string html(const std::string& sceneName, const std::vector<ComparedRender>
          "padding:2px 8px}td{text-align:right}</style></head><body>\n<h1>"
       << escapeHtml(sceneName) << "</h1>\n<div class=\"images\">\n";
   for (const ComparedRender& render : renders) {
-    out << "<figure><a href=\"" << escapeHtml(render.algorithm) << ".png\"><img src=\""
-        << escapeHtml(render.algorithm) << ".png\" alt=\"" << escapeHtml(render.algorithm)
-        << "\"></a><figcaption><b>" << escapeHtml(render.algorithm)
-        << "</b>: " << escapeHtml(render.summary) << "</figcaption></figure>\n";
+    out << "<figure><a href=\"" << escapeHtml(std::string(render.algorithm->name))
+        << ".png\"><img src=\"" << escapeHtml(std::string(render.algorithm->name))
+        << ".png\" alt=\"" << escapeHtml(std::string(render.algorithm->name))
+        << "\"></a><figcaption><b>" << escapeHtml(std::string(render.algorithm->name))
+        << "</b>: " << escapeHtml(std::string(render.algorithm->summary))
+        << "</figcaption></figure>\n";
   }
   out << "</div>\n<h2>Render time</h2>\n"
       << timeChart(renders) << "<h2>Counters</h2>\n<table><tr><th></th>";
   for (const ComparedRender& render : renders)
-    out << "<th>" << escapeHtml(render.algorithm) << "</th>";
+    out << "<th>" << escapeHtml(std::string(render.algorithm->name)) << "</th>";
   out << "</tr>\n";
   for (const std::string& name : names) {
     out << "<tr><th>" << escapeHtml(name) << "</th>";
@@ -168,7 +171,7 @@ std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& 
 
   std::vector<std::filesystem::path> written;
   for (const ComparedRender& render : renders) {
-    written.push_back(directory / (render.algorithm + ".png"));
+    written.push_back(directory / (std::string(render.algorithm->name) + ".png"));
     writeImage(render.result.image, written.back(), encoding);
   }
   const std::vector<std::string> names = statisticNames(renders);

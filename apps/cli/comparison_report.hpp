@@ -11,8 +11,7 @@ namespace rise::cli {
 
 // One algorithm's render of the compared scene.
 struct ComparedRender {
-  std::string algorithm;
-  std::string summary;
+  const AlgorithmDescription* algorithm;
   RenderResult result;
 };
 

@@ -6,6 +6,7 @@
 // (a scene file error or a wrong option); on status 2 no image is written.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <variant>
 
 #include "algorithms/registry.hpp"
 #include "comparison_report.hpp"
@@ -18,6 +19,13 @@
 
 namespace rise::cli {
 namespace {
+
+template <typename Names>
+std::string joined(const Names& names) {
+  std::string text;
+  for (const auto& name : names) text += (text.empty() ? "" : ", ") + std::string(name);
+  return text;
+}
 
 constexpr int kExitOutputError = 1;
 constexpr int kExitBadInput = 2;
@@ -49,16 +57,14 @@ std::variant<Job, int> prepare(const SettingsOptions& options) {
   Job job;
   try {
     job.scene = loadScene(options.scenePath);
+    job.settings = settingsFor(job.scene, options.request);
   } catch (const SceneError& error) {
     std::cerr << error.what() << "\n";
     return kExitBadInput;
-  }
-  std::variant<RenderSettings, std::string> settings = makeSettings(options, job.scene);
-  if (const auto* problem = std::get_if<std::string>(&settings)) {
-    std::cerr << "rise: " << *problem << "\n";
+  } catch (const SettingsError& error) {
+    std::cerr << "rise: " << error.what() << "\n";
     return kExitBadInput;
   }
-  job.settings = std::get<RenderSettings>(settings);
   return job;
 }
 
@@ -94,19 +100,31 @@ void writeBuffer(const RenderResult& result, const std::string& name,
     writeImage(visualizeBuffer(name, raw), path, Encoding::Linear);
 }
 
-int render(const RenderOptions& options) {
-  std::variant<Job, int> prepared = prepare(options.settings);
-  if (const int* status = std::get_if<int>(&prepared)) return *status;
-  const Job& job = std::get<Job>(prepared);
-  const Renderer& renderer = *findRenderer(options.algorithm);
+// Says which of the options given the algorithm does not read.
+void noteUnreadOptions(const CLI::App& command, const AlgorithmDescription& algorithm) {
+  for (Option option : kAllOptions) {
+    const std::string flag = "--" + std::string(toString(option));
+    if (!algorithm.reads(option) && command.count(flag) > 0)
+      std::cerr << "rise: note: " << algorithm.name << " does not read " << flag << "\n";
+  }
+}
 
-  const RenderResult result = renderWithProgress(renderer, job);
+int render(const RenderOptions& options, const CLI::App& command) {
+  const Renderer& renderer = *findRenderer(options.algorithm);
+  const AlgorithmDescription& algorithm = renderer.description();
   for (const std::string& name : options.buffers) {
-    if (!result.buffers.contains(name)) {
-      std::cerr << "rise: " << renderer.name() << " has no '" << name << "' buffer\n";
+    if (!algorithm.writes(name)) {
+      std::cerr << "rise: --aov " << name << ": " << algorithm.name << " has no '" << name
+                << "' buffer; it has: " << joined(algorithm.buffers) << "\n";
       return kExitBadInput;
     }
   }
+  std::variant<Job, int> prepared = prepare(options.settings);
+  if (const int* status = std::get_if<int>(&prepared)) return *status;
+  const Job& job = std::get<Job>(prepared);
+  noteUnreadOptions(command, algorithm);
+
+  const RenderResult result = renderWithProgress(renderer, job);
   const std::filesystem::path output =
       options.output.empty() ? defaultOutput(options.settings.scenePath, ".png") : options.output;
   const RenderDescription description = describe(job, renderer.name());
@@ -135,7 +153,7 @@ int compare(const CompareOptions& options) {
         std::find(options.algorithms.begin(), options.algorithms.end(), name) ==
             options.algorithms.end())
       continue;
-    renders.push_back({name, std::string(renderer->summary()), renderWithProgress(*renderer, job)});
+    renders.push_back({&renderer->description(), renderWithProgress(*renderer, job)});
     std::cerr << name << ": " << renders.back().result.stats.value("render_seconds") << " s\n";
   }
   const std::filesystem::path directory =
@@ -164,14 +182,30 @@ int validate(const std::string& scenePath) {
 
 void listAlgorithms() {
   for (const Renderer* renderer : allRenderers()) {
-    std::cout << renderer->name() << "\n    " << renderer->summary() << "\n    "
-              << renderer->citation() << "\n";
+    const AlgorithmDescription& algorithm = renderer->description();
+    std::vector<std::string_view> options, effects;
+    for (Option option : algorithm.options) options.push_back(toString(option));
+    for (Effect effect : algorithm.effects) effects.push_back(toString(effect));
+    std::cout << algorithm.name << "\n    " << algorithm.summary << "\n    " << algorithm.citation
+              << "\n    family: " << toString(algorithm.family)
+              << "\n    buffers: " << joined(algorithm.buffers)
+              << "\n    options: " << joined(options) << "\n    effects: " << joined(effects)
+              << "\n";
   }
 }
 
 std::vector<std::string> algorithmNames() {
   std::vector<std::string> names;
   for (const Renderer* renderer : allRenderers()) names.emplace_back(renderer->name());
+  return names;
+}
+
+// Every buffer some algorithm writes, in the order they are first met.
+std::vector<std::string> bufferNames() {
+  std::vector<std::string> names;
+  for (const Renderer* renderer : allRenderers())
+    for (std::string_view buffer : renderer->description().buffers)
+      if (std::find(names.begin(), names.end(), buffer) == names.end()) names.emplace_back(buffer);
   return names;
 }
 
@@ -195,10 +229,11 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
       ->transform(encodings());
   command
       ->add_option("--aov", options.buffers,
-                   "Auxiliary buffers to write beside the image: depth, normal, cost, face "
-                   "(face: the visible-surface algorithms only)")
+                   "Auxiliary buffers to write beside the image (`rise algorithms` lists each "
+                   "algorithm's): " +
+                       joined(bufferNames()))
       ->delimiter(',')
-      ->check(CLI::IsMember({"depth", "normal", "cost", "face"}));
+      ->check(CLI::IsMember(bufferNames()));
   return command;
 }
 
@@ -246,7 +281,7 @@ int run(int argc, char** argv) {
   } catch (const CLI::ParseError& error) {
     return app.exit(error) == 0 ? 0 : kExitBadInput;
   }
-  if (*renderCommand) return render(renderOptions);
+  if (*renderCommand) return render(renderOptions, *renderCommand);
   if (*compareCommand) return compare(compareOptions);
   if (*validateCommand) return validate(validatePath);
   if (*algorithmsCommand) listAlgorithms();

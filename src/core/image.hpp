@@ -1,11 +1,25 @@
 #pragma once
 
+#include <algorithm>
 #include <cassert>
 #include <vector>
 
 #include "core/color.hpp"
 
 namespace rise {
+
+// A rectangle of pixels [x0, x1) x [y0, y1): a tile, a band, a window.
+struct PixelRect {
+  int x0, y0, x1, y1;
+
+  bool isEmpty() const { return x0 >= x1 || y0 >= y1; }
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+  PixelRect intersection(const PixelRect& other) const {
+    return {std::max(x0, other.x0), std::max(y0, other.y0), std::min(x1, other.x1),
+            std::min(y1, other.y1)};
+  }
+};
 
 // A width x height grid of linear colours, row 0 at the top.
 class Image {

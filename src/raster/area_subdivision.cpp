@@ -1,23 +1,56 @@
+// Area subdivision, after Warnock (1969).
+//
+// Divide and conquer over the screen: a window, at first the whole image, is
+// drawn at once if what it shows is simple; otherwise it is cut into four
+// quadrants, each handled the same way. Each polygon stands to a window in
+// one of four relations:
+//   surrounding   it holds the whole window;
+//   intersecting  it crosses the window's border;
+//   contained     it lies wholly inside the window;
+//   disjoint      it covers none of it.
+// A window is simple, and drawn, when
+//   - every polygon is disjoint from it: it shows the background;
+//   - one polygon alone is not disjoint: it is scan-converted in the window
+//     over the background;
+//   - a surrounding polygon is in front of all the others everywhere in the
+//     window (its farthest depth there nearer than their nearest): it fills
+//     the window;
+//   - the window is a single pixel: the polygons covering the pixel's centre
+//     are compared in depth there, and the nearest is drawn.
+// Only the polygons not disjoint from a window are handed to its quadrants.
+//
+// Depths are inverse depths w = 1 / n, affine across a polygon's image, so
+// their extremes over a window lie at its corners. The windows waiting to be
+// examined are shared among threads. Cost of a pixel:
+// the classifications made for the windows that hold it, each window's shared
+// among its pixels, plus the depth tests made at the pixel.
 #include "raster/area_subdivision.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <numeric>
 #include <string>
 #include <vector>
 
 #include "raster/polygon_coverage.hpp"
-#include "render/tiles.hpp"
 
 namespace rise {
+
+const AlgorithmDescription& AreaSubdivisionRenderer::description() const {
+  static const AlgorithmDescription description = visibleSurfaceAlgorithm(
+      "area-subdivision",
+      "Warnock's area subdivision: quarter the screen until each window is simple",
+      "J. E. Warnock, A hidden-surface algorithm for computer generated half-tone "
+      "pictures, University of Utah, TR 4-15, 1969");
+  return description;
+}
+
 namespace {
 
 enum Relation { kSurrounding, kIntersecting, kContained, kDisjoint, kRelationCount };
 constexpr std::array<const char*, kRelationCount> kRelationNames = {"surrounding", "intersecting",
                                                                     "contained", "disjoint"};
-
-// The windows this many levels down are shared among threads.
-constexpr int kParallelLevel = 3;
 
 struct SubdivisionCounters {
   std::array<std::uint64_t, kRelationCount> relations{};
@@ -45,10 +78,10 @@ struct SubdivisionCounters {
   }
 };
 
-// A window still to be subdivided, and the polygons not disjoint from its
-// parent.
-struct PendingWindow {
-  PixelRect window;
+// A window waiting to be examined, with the polygons not disjoint from its
+// parent: the only ones that can reach into it.
+struct Window {
+  PixelRect area;
   std::vector<int> candidates;
 };
 
@@ -75,14 +108,12 @@ class Subdivision {
     }
   }
 
-  // Handles `window`; windows reaching `stopLevel` are left in `pending`.
-  void subdivide(const PixelRect& window, const std::vector<int>& candidates, int level,
-                 int stopLevel, std::vector<PendingWindow>& pending,
-                 SubdivisionCounters& counters) const {
-    if (level == stopLevel) {
-      pending.push_back({window, candidates});
-      return;
-    }
+  // Draws the window if what it shows is simple, or else hands back its
+  // quadrants in `quadrants`, to be examined in turn.
+  void examine(const Window& examined, SubdivisionCounters& counters,
+               std::vector<Window>& quadrants) const {
+    const PixelRect& window = examined.area;
+    const std::vector<int>& candidates = examined.candidates;
     ++counters.windows;
     const Vec2 low(static_cast<float>(window.x0), static_cast<float>(window.y0));
     const Vec2 high(static_cast<float>(window.x1), static_cast<float>(window.y1));
@@ -115,8 +146,8 @@ class Subdivision {
       resolvePixel(window.x0, window.y0, present, counters);
     } else {
       ++counters.subdivisions;
-      for (const PixelRect& quadrant : quadrants(window))
-        subdivide(quadrant, present, level + 1, stopLevel, pending, counters);
+      for (const PixelRect& quadrant : quadrantsOf(window))
+        quadrants.push_back({quadrant, present});
     }
   }
 
@@ -195,7 +226,7 @@ class Subdivision {
       for (int x = window.x0; x < window.x1; ++x) frame_.addCost(x, y, share);
   }
 
-  static std::vector<PixelRect> quadrants(const PixelRect& window) {
+  static std::vector<PixelRect> quadrantsOf(const PixelRect& window) {
     const int middleX = (window.x0 + window.x1) / 2;
     const int middleY = (window.y0 + window.y1) / 2;
     std::vector<PixelRect> parts;
@@ -217,31 +248,19 @@ class Subdivision {
 }  // namespace
 
 void AreaSubdivisionRenderer::resolveVisibility(const ScreenGeometry& screen,
-                                                const RenderSettings& settings,
-                                                RenderObserver& observer, RasterFrame& frame,
+                                                const Workers& workers, RasterFrame& frame,
                                                 Stats& stats) const {
   const Subdivision subdivision(screen, frame);
   std::vector<int> all(screen.polygons.size());
-  for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
-
-  // The top levels here; the windows below them on threads.
-  SubdivisionCounters top;
-  std::vector<PendingWindow> pending;
-  subdivision.subdivide({0, 0, frame.width(), frame.height()}, all, 0, kParallelLevel, pending,
-                        top);
-  std::vector<SubdivisionCounters> counters(pending.size());
-  std::vector<Tile> tasks;
-  for (std::size_t i = 0; i < pending.size(); ++i)
-    tasks.push_back({static_cast<int>(i), 0, 0, 0, 0});
-  renderTiles(tasks, settings.threads, observer, [&](const Tile& task) {
-    std::vector<PendingWindow> none;
-    const PendingWindow& window = pending[task.index];
-    subdivision.subdivide(window.window, window.candidates, kParallelLevel, -1, none,
-                          counters[task.index]);
-  });
-
-  SubdivisionCounters total = top;
-  for (const SubdivisionCounters& part : counters) total += part;
+  std::iota(all.begin(), all.end(), 0);
+  // The windows waiting to be examined, at first the whole screen; the
+  // workers take them in turn, as a single examiner would take them from
+  // Warnock's stack.
+  const SubdivisionCounters total = workers.drain<Window, SubdivisionCounters>(
+      {Window{{0, 0, frame.width(), frame.height()}, std::move(all)}},
+      [&](const Window& window, SubdivisionCounters& counters, std::vector<Window>& quadrants) {
+        subdivision.examine(window, counters, quadrants);
+      });
   stats.add("depth_tests", static_cast<double>(total.depthTests));
   stats.add("pixels_written", static_cast<double>(total.pixelsWritten));
   stats.add("windows", static_cast<double>(total.windows));

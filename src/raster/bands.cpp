@@ -3,15 +3,12 @@
 #include <algorithm>
 #include <numeric>
 
-#include "raster/polygon_coverage.hpp"
-
 namespace rise {
 
-std::vector<Tile> makeBands(int width, int height) {
-  std::vector<Tile> bands;
+std::vector<PixelRect> makeBands(int width, int height) {
+  std::vector<PixelRect> bands;
   for (int y = 0; y < height; y += kBandHeight)
-    bands.push_back(
-        {static_cast<int>(bands.size()), 0, y, width, std::min(y + kBandHeight, height)});
+    bands.push_back({0, y, width, std::min(y + kBandHeight, height)});
   return bands;
 }
 

@@ -1,3 +1,29 @@
+// Depth sort, the painter's algorithm made exact, after Newell, Newell and
+// Sancha (1972).
+//
+// The polygons are sorted by their farthest point and painted back to front,
+// each over what is already there. Sorting by one depth is not enough when
+// the depth ranges of two polygons overlap, so before P, the next to paint,
+// is painted, it is checked against every polygon Q still waiting: P can be
+// painted first if one of these tests, cheapest first, shows that it cannot
+// hide any part of Q:
+//   1. depth: all of P is farther than all of Q;
+//   2. x: their screen extents do not overlap in x;
+//   3. y: nor in y;
+//   4. P lies wholly behind Q's plane (on the side away from the eye);
+//   5. Q lies wholly in front of P's plane;
+//   6. projection: their images on the screen do not overlap.
+// If all fail, P may hide Q. If Q cannot hide P (tests 1, 4 and 5 with the
+// roles swapped), Q is moved before P and marked. If Q may hide P too, the two
+// interpenetrate, or Q is marked already and the polygons form a cycle of
+// overlaps (A over B over C over A): then P is split along Q's plane (or Q
+// along P's) into pieces that each lie on one side, and sorting goes on with
+// the pieces.
+//
+// Depths are inverse depths w = 1 / n, and a plane's sides are tested in
+// screen space (x, y, w), where planes stay planes. Painting is by the top-left
+// fill rule, in bands of scanlines that threads paint in parallel, each in the
+// painting order. Cost of a pixel: the times it was painted.
 #include "raster/depth_sort.hpp"
 
 #include <algorithm>
@@ -14,6 +40,17 @@
 #include "raster/polygon_coverage.hpp"
 
 namespace rise {
+
+const AlgorithmDescription& DepthSortRenderer::description() const {
+  static const AlgorithmDescription description = visibleSurfaceAlgorithm(
+      "depth-sort",
+      "Newell, Newell and Sancha's depth sort: paint back to front, split what cannot "
+      "be sorted",
+      "M. E. Newell, R. G. Newell, T. L. Sancha, A solution to the hidden surface "
+      "problem, Proceedings of the ACM National Conference, 1972");
+  return description;
+}
+
 namespace {
 
 // The tests that show that P cannot hide Q, in the order they are tried.
@@ -301,18 +338,17 @@ class DepthSorter {
   DepthSortCounters counters_;
 };
 
-void paintBand(const ScreenGeometry& pieces, const Tile& band, std::span<const int> order,
+void paintBand(const ScreenGeometry& pieces, const PixelRect& band, std::span<const int> order,
                RasterFrame& frame, std::uint64_t& pixelsWritten) {
-  const PixelRect bandPixels{band.x0, band.y0, band.x1, band.y1};
-  std::vector<int> faces(static_cast<std::size_t>(band.x1 - band.x0) * (band.y1 - band.y0), -1);
+  std::vector<int> faces(static_cast<std::size_t>(band.width()) * band.height(), -1);
   const auto at = [&](int x, int y) -> int& {
-    return faces[(y - band.y0) * (band.x1 - band.x0) + x - band.x0];
+    return faces[static_cast<std::size_t>(y - band.y0) * band.width() + x - band.x0];
   };
   PolygonCoverage coverage;
   for (int piece : order) {
     const ScreenPolygon& polygon = pieces.polygons[piece];
     coverage.reset(pieces.cornersOf(polygon));
-    coverage.forEachPixel(bandPixels, [&](int x, int y) {
+    coverage.forEachPixel(band, [&](int x, int y) {
       at(x, y) = polygon.face;
       frame.addCost(x, y, 1.0f);
       ++pixelsWritten;
@@ -325,23 +361,18 @@ void paintBand(const ScreenGeometry& pieces, const Tile& band, std::span<const i
 
 }  // namespace
 
-void DepthSortRenderer::resolveVisibility(const ScreenGeometry& screen,
-                                          const RenderSettings& settings, RenderObserver& observer,
+void DepthSortRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
                                           RasterFrame& frame, Stats& stats) const {
   DepthSorter sorter(screen);
   const std::vector<int> order = sorter.paintingOrder();
-  const std::vector<Tile> bands = makeBands(frame.width(), frame.height());
-  const std::vector<std::vector<int>> bandPieces =
-      polygonsByBand(sorter.pieces(), order, frame.height());
-  std::vector<std::uint64_t> bandPixelsWritten(bands.size(), 0);
-  renderTiles(bands, settings.threads, observer, [&](const Tile& band) {
-    paintBand(sorter.pieces(), band, bandPieces[band.index], frame, bandPixelsWritten[band.index]);
-  });
+  const std::uint64_t pixelsWritten = drawInBands<std::uint64_t>(
+      workers, sorter.pieces(), order, frame.width(), frame.height(),
+      [&](const PixelRect& band, std::span<const int> pieces, std::uint64_t& bandPixels) {
+        paintBand(sorter.pieces(), band, pieces, frame, bandPixels);
+      });
 
   const DepthSortCounters& counters = sorter.counters();
-  stats.add("pixels_written",
-            static_cast<double>(std::accumulate(bandPixelsWritten.begin(), bandPixelsWritten.end(),
-                                                std::uint64_t{0})));
+  stats.add("pixels_written", static_cast<double>(pixelsWritten));
   stats.add("comparisons", static_cast<double>(counters.comparisons));
   for (int test = 0; test < kTestCount; ++test)
     stats.add(std::string("settled_by_") + kTestNames[test],

@@ -7,11 +7,6 @@
 
 namespace rise {
 
-PixelRect PixelRect::intersection(const PixelRect& other) const {
-  return {std::max(x0, other.x0), std::max(y0, other.y0), std::min(x1, other.x1),
-          std::min(y1, other.y1)};
-}
-
 PixelRect pixelBoundsOf(std::span<const Vec3> corners) {
   Vec2 low(kInfinity), high(-kInfinity);
   for (const Vec3& corner : corners) {

@@ -16,17 +16,10 @@
 #include <span>
 #include <vector>
 
+#include "core/image.hpp"
 #include "core/math.hpp"
 
 namespace rise {
-
-// The pixels [x0, x1) x [y0, y1).
-struct PixelRect {
-  int x0, y0, x1, y1;
-
-  bool isEmpty() const { return x0 >= x1 || y0 >= y1; }
-  PixelRect intersection(const PixelRect& other) const;
-};
 
 // The smallest rectangle of pixels holding every pixel centre within the
 // bounding box of the corners (raster positions in x and y).

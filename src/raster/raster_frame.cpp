@@ -2,20 +2,20 @@
 
 #include <array>
 
-#include "raster/parallel_ranges.hpp"
-
 namespace rise {
 
 RasterFrame::RasterFrame(int width, int height, const Color& background,
-                         const ScreenGeometry& screen, const SurfaceShader& shader, int threads)
+                         const ScreenGeometry& screen, const SurfaceShader& shader,
+                         const Workers& workers)
     : screen_(screen), shader_(shader) {
   // Filling five image-sized buffers is a fair share of a frame of a large
-  // image: the render's threads share it.
+  // image: the render's workers share it.
   const std::array<Color, 5> fills = {background, Color(kInfinity), Color(0.0f), Color(-1.0f),
                                       Color(0.0f)};
   std::array<Image, 5> images;
-  forEachRange(static_cast<int>(images.size()), 1, threads,
-               [&](int image, int, int) { images[image] = Image(width, height, fills[image]); });
+  workers.forEachRange(static_cast<int>(images.size()), 1, [&](int image, int, int) {
+    images[image] = Image(width, height, fills[image]);
+  });
   result_.image = std::move(images[0]);
   depth_ = &(result_.buffers["depth"] = std::move(images[1]));
   normal_ = &(result_.buffers["normal"] = std::move(images[2]));

@@ -15,7 +15,7 @@ namespace rise {
 class RasterFrame {
  public:
   RasterFrame(int width, int height, const Color& background, const ScreenGeometry& screen,
-              const SurfaceShader& shader, int threads);
+              const SurfaceShader& shader, const Workers& workers);
 
   int width() const { return result_.image.width(); }
   int height() const { return result_.image.height(); }

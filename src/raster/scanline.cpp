@@ -1,3 +1,31 @@
+// The scanline algorithm, after Watkins (1970) and Bouknight (1970), in the
+// form of the original RISE report, which follows Dreux (1988): a depth buffer
+// and a face buffer only one scanline wide.
+//
+// The image is built one scanline at a time, top to bottom:
+//  - the edge table: every polygon edge, bucket-sorted by the first scanline
+//    whose centre it crosses (Achar_Min_Max, Init_Bucket_Sort);
+//  - the active edge list: the edges crossing the current scanline, with
+//    where they cross it. Going down a scanline, each edge's crossing moves
+//    by its constant step dx/dy (an incremental update), the edges that end
+//    leave the list and the table's bucket for the scanline joins it
+//    (Remover_Arestas, Inserir_Arestas);
+//  - spans: the list is kept in polygon order, so each active polygon's
+//    edges lie side by side, and its span on the scanline runs from the
+//    leftmost to the rightmost of them (Limites_da_Face);
+//  - the pixel centres of each span, left edge in and right edge out (the
+//    top-left rule), are compared in depth with the scanline's depth buffer,
+//    and the nearer polygon's number is kept in the face buffer
+//    (Processar_Faces_Ativas); the finished scanline is shaded, and the
+//    buffers cleared for the next (gerar_scanline, Atualizar_Buffers).
+//
+// The memory of the buffers ("scanline_buffer_bytes") grows with the image's
+// width only, where the z-buffer's grows with its area. The two edges of a
+// shared border start from the same end and take the same steps, so their
+// crossings agree exactly and no pixel between two polygons is drawn twice or
+// missed. The image is cut into bands of scanlines that threads sweep in
+// parallel, each band starting its edges at its first scanline, with buffers
+// of its own. Cost of a pixel: the depth tests made at it.
 #include "raster/scanline.hpp"
 
 #include <algorithm>
@@ -8,6 +36,18 @@
 #include "raster/bands.hpp"
 
 namespace rise {
+
+const AlgorithmDescription& ScanlineRenderer::description() const {
+  static const AlgorithmDescription description = visibleSurfaceAlgorithm(
+      "scanline",
+      "Watkins' and Bouknight's scanline algorithm with Dreux's one-scanline depth "
+      "buffer",
+      "M. Dreux, A simple effective linear-growth scanline algorithm, ICONCG 1988; G. "
+      "S. Watkins, PhD thesis, University of Utah, 1970; W. J. Bouknight, CACM 13(9), "
+      "1970");
+  return description;
+}
+
 namespace {
 
 struct ScanlineCounters {
@@ -16,6 +56,15 @@ struct ScanlineCounters {
   std::uint64_t edges = 0;             // entries of the edge tables
   std::uint64_t activeEdgeVisits = 0;  // active edges, summed over the scanlines
   std::uint64_t activeEdgesMax = 0;
+
+  ScanlineCounters& operator+=(const ScanlineCounters& other) {
+    depthTests += other.depthTests;
+    pixelsWritten += other.pixelsWritten;
+    edges += other.edges;
+    activeEdgeVisits += other.activeEdgeVisits;
+    activeEdgesMax = std::max(activeEdgesMax, other.activeEdgesMax);
+    return *this;
+  }
 };
 
 // An edge of a polygon, where it crosses the current scanline's centre.
@@ -31,7 +80,7 @@ int firstScanlineFrom(float y) { return static_cast<int>(std::ceil(y - 0.5f)); }
 
 class BandSweep {
  public:
-  BandSweep(const ScreenGeometry& screen, const Tile& band, const std::vector<int>& polygons,
+  BandSweep(const ScreenGeometry& screen, const PixelRect& band, std::span<const int> polygons,
             RasterFrame& frame, ScanlineCounters& counters)
       : screen_(screen),
         band_(band),
@@ -131,8 +180,8 @@ class BandSweep {
   }
 
   const ScreenGeometry& screen_;
-  const Tile& band_;
-  const std::vector<int>& polygons_;
+  const PixelRect& band_;
+  std::span<const int> polygons_;
   RasterFrame& frame_;
   ScanlineCounters& counters_;
   std::vector<std::vector<ActiveEdge>> edgeTable_;  // a bucket per scanline of the band
@@ -143,35 +192,21 @@ class BandSweep {
 
 }  // namespace
 
-void ScanlineRenderer::resolveVisibility(const ScreenGeometry& screen,
-                                         const RenderSettings& settings, RenderObserver& observer,
+void ScanlineRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
                                          RasterFrame& frame, Stats& stats) const {
-  const std::vector<Tile> bands = makeBands(frame.width(), frame.height());
-  const std::vector<std::vector<int>> bandPolygons =
-      polygonsByBand(screen, inMadeOrder(screen), frame.height());
-  std::vector<ScanlineCounters> bandCounters(bands.size());
-  renderTiles(bands, settings.threads, observer, [&](const Tile& band) {
-    BandSweep(screen, band, bandPolygons[band.index], frame, bandCounters[band.index]).run();
-  });
-
-  ScanlineCounters total;
-  for (const ScanlineCounters& counters : bandCounters) {
-    total.depthTests += counters.depthTests;
-    total.pixelsWritten += counters.pixelsWritten;
-    total.edges += counters.edges;
-    total.activeEdgeVisits += counters.activeEdgeVisits;
-    total.activeEdgesMax = std::max(total.activeEdgesMax, counters.activeEdgesMax);
-  }
-  const int sweptAtOnce =
-      std::min(resolveThreadCount(settings.threads), static_cast<int>(bands.size()));
-  stats.add("depth_tests", static_cast<double>(total.depthTests));
-  stats.add("pixels_written", static_cast<double>(total.pixelsWritten));
-  stats.add("edge_table_entries", static_cast<double>(total.edges));
+  const ScanlineCounters counters = drawInBands<ScanlineCounters>(
+      workers, screen, inMadeOrder(screen), frame.width(), frame.height(),
+      [&](const PixelRect& band, std::span<const int> polygons, ScanlineCounters& bandCounters) {
+        BandSweep(screen, band, polygons, frame, bandCounters).run();
+      });
+  stats.add("depth_tests", static_cast<double>(counters.depthTests));
+  stats.add("pixels_written", static_cast<double>(counters.pixelsWritten));
+  stats.add("edge_table_entries", static_cast<double>(counters.edges));
   stats.add("active_edges_per_scanline",
-            static_cast<double>(total.activeEdgeVisits) / std::max(frame.height(), 1));
-  stats.add("active_edges_max", static_cast<double>(total.activeEdgesMax));
+            static_cast<double>(counters.activeEdgeVisits) / std::max(frame.height(), 1));
+  stats.add("active_edges_max", static_cast<double>(counters.activeEdgesMax));
   stats.add("scanline_buffer_bytes",
-            static_cast<double>(sweptAtOnce) * frame.width() * (sizeof(float) + sizeof(int)));
+            static_cast<double>(frame.width()) * (sizeof(float) + sizeof(int)));
 }
 
 }  // namespace rise

@@ -1,6 +1,5 @@
 #include "raster/screen_geometry.hpp"
 
-#include "raster/parallel_ranges.hpp"
 #include "raster/polygon_clipping.hpp"
 
 namespace rise {
@@ -163,15 +162,15 @@ int ScreenGeometry::addPolygon(int face, std::span<const Vec3> polygonCorners) {
 }
 
 ScreenGeometry projectScene(const TessellatedScene& scene, const ViewProjection& view,
-                            bool backfaceCulling, int threads) {
+                            bool backfaceCulling, const Workers& workers) {
   FaceProjector projector(scene, view, backfaceCulling);
   const int vertexCount = static_cast<int>(scene.vertices.size());
-  forEachRange(vertexCount, kFacesPerRange, threads,
-               [&](int, int begin, int end) { projector.viewVertices(begin, end); });
+  workers.forEachRange(vertexCount, kFacesPerRange,
+                       [&](int, int begin, int end) { projector.viewVertices(begin, end); });
 
   const int faceCount = static_cast<int>(scene.faces.size());
-  std::vector<ScreenGeometry> parts(rangeCount(faceCount, kFacesPerRange));
-  forEachRange(faceCount, kFacesPerRange, threads, [&](int range, int begin, int end) {
+  std::vector<ScreenGeometry> parts(Workers::rangeCount(faceCount, kFacesPerRange));
+  workers.forEachRange(faceCount, kFacesPerRange, [&](int range, int begin, int end) {
     projector.projectFaces(begin, end, parts[range]);
   });
   ScreenGeometry screen;

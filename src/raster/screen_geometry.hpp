@@ -27,6 +27,7 @@
 #include <span>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "raster/tessellated_scene.hpp"
 #include "raster/view_projection.hpp"
 
@@ -90,9 +91,9 @@ struct ScreenGeometry {
   int addPolygon(int face, std::span<const Vec3> polygonCorners);
 };
 
-// Runs the pipeline on `threads` threads; the result does not depend on
-// their number.
+// Runs the pipeline on the workers; the result does not depend on their
+// number.
 ScreenGeometry projectScene(const TessellatedScene& scene, const ViewProjection& view,
-                            bool backfaceCulling, int threads);
+                            bool backfaceCulling, const Workers& workers);
 
 }  // namespace rise

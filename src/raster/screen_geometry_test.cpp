@@ -18,10 +18,10 @@ struct Projected {
 };
 
 Projected project(const Scene& scene, bool culling = true) {
-  RenderSettings settings = raster_testing::settingsFor(scene);
+  RenderSettings settings = settingsFor(scene);
   Projected result{tessellateForRaster(scene, settings), {}};
   const ViewProjection view(ViewFrame(scene.camera, settings.width, settings.height));
-  result.screen = projectScene(result.tessellated, view, culling, 2);
+  result.screen = projectScene(result.tessellated, view, culling, Workers(2));
   return result;
 }
 

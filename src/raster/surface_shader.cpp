@@ -1,6 +1,5 @@
 #include "raster/surface_shader.hpp"
 
-#include "raster/parallel_ranges.hpp"
 #include "scene/textures/surface_mapping.hpp"
 #include "shading/phong.hpp"
 
@@ -20,14 +19,14 @@ Vec3 towardsEye(const Vec3& normal, int side) { return side == kFront ? normal :
 
 SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessellated,
                              const ScreenGeometry& screen, const ViewProjection& view,
-                             Shading shading, int threads)
+                             Shading shading, const Workers& workers)
     : scene_(scene),
       tessellated_(tessellated),
       screen_(screen),
       eye_(view.eye()),
       shading_(shading) {
-  if (shading_ == Shading::Flat) lightFaces(threads);
-  if (shading_ == Shading::Gouraud) lightVertices(threads);
+  if (shading_ == Shading::Flat) lightFaces(workers);
+  if (shading_ == Shading::Gouraud) lightVertices(workers);
 }
 
 Color SurfaceShader::illuminate(const Material& material, const SurfaceColors& colors,
@@ -53,23 +52,23 @@ SurfaceShader::Illumination SurfaceShader::illumination(const Material& material
           illuminate(material, {Color(0.0f), Color(1.0f)}, position, normal, normal)};
 }
 
-void SurfaceShader::lightFaces(int threads) {
+void SurfaceShader::lightFaces(const Workers& workers) {
   faceLight_.resize(screen_.faces.size());
-  forEachRange(static_cast<int>(faceLight_.size()), kItemsPerRange, threads,
-               [&](int, int begin, int end) {
-                 for (int f = begin; f < end; ++f) {
-                   const SceneFace& face = tessellated_.faces[screen_.faces[f].sceneFace];
-                   const Vec3& a = tessellated_.vertices[face.vertices[0]].position;
-                   const Vec3& b = tessellated_.vertices[face.vertices[1]].position;
-                   const Vec3& c = tessellated_.vertices[face.vertices[2]].position;
-                   const Vec3 normal = glm::normalize(glm::cross(b - a, c - a));
-                   faceLight_[f] = illumination(scene_.materials[face.material], (a + b + c) / 3.0f,
-                                                towardsEye(normal, sideSeen(screen_.faces[f])));
-                 }
-               });
+  workers.forEachRange(
+      static_cast<int>(faceLight_.size()), kItemsPerRange, [&](int, int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+          const SceneFace& face = tessellated_.faces[screen_.faces[f].sceneFace];
+          const Vec3& a = tessellated_.vertices[face.vertices[0]].position;
+          const Vec3& b = tessellated_.vertices[face.vertices[1]].position;
+          const Vec3& c = tessellated_.vertices[face.vertices[2]].position;
+          const Vec3 normal = glm::normalize(glm::cross(b - a, c - a));
+          faceLight_[f] = illumination(scene_.materials[face.material], (a + b + c) / 3.0f,
+                                       towardsEye(normal, sideSeen(screen_.faces[f])));
+        }
+      });
 }
 
-void SurfaceShader::lightVertices(int threads) {
+void SurfaceShader::lightVertices(const Workers& workers) {
   // Only the vertices of faces in view, on the sides seen, as a graphics
   // pipeline lights only the vertices it is given.
   const std::size_t vertexCount = tessellated_.vertices.size();
@@ -83,8 +82,8 @@ void SurfaceShader::lightVertices(int threads) {
   for (int side : {kFront, kBack}) {
     if (material[side].empty()) continue;
     vertexLight_[side].resize(vertexCount);
-    forEachRange(
-        static_cast<int>(vertexCount), kItemsPerRange, threads, [&](int, int begin, int end) {
+    workers.forEachRange(
+        static_cast<int>(vertexCount), kItemsPerRange, [&](int, int begin, int end) {
           for (int v = begin; v < end; ++v) {
             if (material[side][v] < 0) continue;
             const SurfaceVertex& vertex = tessellated_.vertices[v];

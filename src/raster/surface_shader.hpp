@@ -46,10 +46,10 @@ struct ShadedPixel {
 class SurfaceShader {
  public:
   // Evaluates the model once per face (flat) or per vertex (Gouraud), on
-  // `threads` threads.
+  // the workers.
   SurfaceShader(const Scene& scene, const TessellatedScene& tessellated,
                 const ScreenGeometry& screen, const ViewProjection& view, Shading shading,
-                int threads);
+                const Workers& workers);
 
   // The screen face `face` seen at the raster point `centre`.
   ShadedPixel shade(int face, const Vec2& centre) const;
@@ -73,8 +73,8 @@ class SurfaceShader {
                    const Vec3& surfaceNormal, const Vec3& shadingNormal) const;
   Illumination illumination(const Material& material, const Vec3& position,
                             const Vec3& normal) const;
-  void lightFaces(int threads);
-  void lightVertices(int threads);
+  void lightFaces(const Workers& workers);
+  void lightVertices(const Workers& workers);
 
   const Scene& scene_;
   const TessellatedScene& tessellated_;

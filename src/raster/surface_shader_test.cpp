@@ -15,7 +15,6 @@ namespace {
 
 using raster_testing::faceAt;
 using raster_testing::render;
-using raster_testing::settingsFor;
 
 RenderResult renderShaded(const Scene& scene, Shading shading, int tessellation = 8) {
   RenderSettings settings = settingsFor(scene);

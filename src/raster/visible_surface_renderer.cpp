@@ -3,7 +3,6 @@
 #include "core/random.hpp"
 #include "core/sampling.hpp"
 #include "render/film.hpp"
-#include "render/tiles.hpp"
 
 namespace rise {
 namespace {
@@ -18,6 +17,17 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
 }
 
 }  // namespace
+
+AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
+                                             std::string_view citation) {
+  return {name,
+          summary,
+          citation,
+          Family::VisibleSurface,
+          {"depth", "normal", "cost", "face"},
+          {Option::Shading, Option::Culling, Option::Tessellation, Option::PlaneSize},
+          {Effect::DepthOfField, Effect::MotionBlur}};
+}
 
 TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& settings,
                                      float time) {
@@ -86,7 +96,7 @@ RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSett
   const int passCount = static_cast<int>(passes.size());
   TessellatedScene tessellated = tessellateForRaster(scene, settings, passes[0].time);
   Film film(settings.width, settings.height, settings.sampling.filter);
-  FilmTile filmTile = film.tileFor(Tile{0, 0, 0, settings.width, settings.height});
+  FilmTile filmTile = film.tileFor({0, 0, settings.width, settings.height});
 
   RenderResult accumulated;
   for (int pass = 0; pass < passCount && !observer.cancelled(); ++pass) {
@@ -120,17 +130,17 @@ RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
                                                   const RenderSettings& settings,
                                                   const AccumulationPass& pass,
                                                   RenderObserver& observer) const {
-  const int threads = resolveThreadCount(settings.threads);
+  const Workers workers(settings.threads, observer);
   const ViewProjection view(ViewFrame(scene.camera, settings.width, settings.height),
                             pass.pixelOffset, pass.lens);
-  const ScreenGeometry screen = projectScene(tessellated, view, settings.backfaceCulling, threads);
-  const SurfaceShader shader(scene, tessellated, screen, view, settings.shading, threads);
+  const ScreenGeometry screen = projectScene(tessellated, view, settings.backfaceCulling, workers);
+  const SurfaceShader shader(scene, tessellated, screen, view, settings.shading, workers);
   RasterFrame frame(settings.width, settings.height, scene.image.background, screen, shader,
-                    threads);
+                    workers);
 
   Stats stats;
   addProjectionStats(stats, screen);
-  resolveVisibility(screen, settings, observer, frame, stats);
+  resolveVisibility(screen, workers, frame, stats);
   stats.add("covered_pixels", static_cast<double>(frame.coveredPixels()));
 
   RenderResult result = frame.takeResult();

@@ -48,11 +48,17 @@ class VisibleSurfaceRenderer : public Renderer {
 
  protected:
   // Finds the face seen at each pixel and tells the frame, adding the
-  // algorithm's counters to `stats`, among them "pixels_written".
-  virtual void resolveVisibility(const ScreenGeometry& screen, const RenderSettings& settings,
-                                 RenderObserver& observer, RasterFrame& frame,
-                                 Stats& stats) const = 0;
+  // algorithm's counters to `stats`, among them "pixels_written". The
+  // workers report progress to the render's observer.
+  virtual void resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
+                                 RasterFrame& frame, Stats& stats) const = 0;
 };
+
+// The description of a visible-surface algorithm: what the family shares
+// (its buffers, the settings it reads, the effects of the accumulation
+// passes) with the algorithm's own name, summary and citation.
+AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
+                                             std::string_view citation);
 
 // The scene tessellated as the settings ask, planes centred under the camera,
 // moving shapes where they are at `time`, a fraction of the shutter interval

@@ -1,3 +1,19 @@
+// The z-buffer, after Catmull (1974).
+//
+// Beside the image, a buffer holds the depth of what each pixel shows, all
+// pixels starting infinitely far. The polygons are drawn one by one, in any
+// order: at each pixel centre a polygon covers (by the top-left fill rule,
+// so that a pixel on an edge two polygons share is drawn by one of them),
+// its depth is compared with the buffer's, and if nearer it takes the pixel
+// and the buffer takes its depth. Nothing is sorted and no two polygons are
+// ever compared; the price is memory, a depth and a face for every pixel of
+// the image (reported as "z_buffer_bytes"), and the work spent on hidden
+// polygons ("overdraw").
+//
+// Depths are compared as w = 1 / n, which is affine across a polygon's image
+// and larger for nearer points. The image is cut into bands of scanlines that
+// threads draw in parallel, each band with the polygons that reach into it.
+// Cost of a pixel: the depth tests made at it.
 #include "raster/z_buffer.hpp"
 
 #include <algorithm>
@@ -9,11 +25,26 @@
 #include "raster/polygon_coverage.hpp"
 
 namespace rise {
+
+const AlgorithmDescription& ZBufferRenderer::description() const {
+  static const AlgorithmDescription description = visibleSurfaceAlgorithm(
+      "z-buffer", "Catmull's z-buffer: a depth per pixel, polygons drawn in any order",
+      "E. Catmull, A subdivision algorithm for computer display of curved surfaces, "
+      "PhD thesis, University of Utah, 1974");
+  return description;
+}
+
 namespace {
 
 struct ZBufferCounters {
   std::uint64_t depthTests = 0;
   std::uint64_t pixelsWritten = 0;
+
+  ZBufferCounters& operator+=(const ZBufferCounters& other) {
+    depthTests += other.depthTests;
+    pixelsWritten += other.pixelsWritten;
+    return *this;
+  }
 };
 
 // The depth and face buffers, the size of the image. Each band clears its
@@ -27,7 +58,7 @@ struct ZBuffer {
 
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
 
-  void clear(const Tile& band) {
+  void clear(const PixelRect& band) {
     const std::size_t first = index(band.x0, band.y0);
     const std::size_t end = index(band.x0, band.y1);
     std::fill(inverseDepth.get() + first, inverseDepth.get() + end, 0.0f);
@@ -40,16 +71,15 @@ struct ZBuffer {
   std::unique_ptr<int[]> face;            // -1: none
 };
 
-void drawBand(const ScreenGeometry& screen, const Tile& band, std::span<const int> polygons,
+void drawBand(const ScreenGeometry& screen, const PixelRect& band, std::span<const int> polygons,
               ZBuffer& buffer, RasterFrame& frame, ZBufferCounters& counters) {
-  const PixelRect bandPixels{band.x0, band.y0, band.x1, band.y1};
   buffer.clear(band);
   PolygonCoverage coverage;
   for (int index : polygons) {
     const ScreenPolygon& polygon = screen.polygons[index];
     const ScreenFace& face = screen.faces[polygon.face];
     coverage.reset(screen.cornersOf(polygon));
-    coverage.forEachPixel(bandPixels, [&](int x, int y) {
+    coverage.forEachPixel(band, [&](int x, int y) {
       ++counters.depthTests;
       frame.addCost(x, y, 1.0f);
       const std::size_t pixel = buffer.index(x, y);
@@ -68,25 +98,16 @@ void drawBand(const ScreenGeometry& screen, const Tile& band, std::span<const in
 
 }  // namespace
 
-void ZBufferRenderer::resolveVisibility(const ScreenGeometry& screen,
-                                        const RenderSettings& settings, RenderObserver& observer,
+void ZBufferRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
                                         RasterFrame& frame, Stats& stats) const {
   ZBuffer buffer(frame.width(), frame.height());
-  const std::vector<Tile> bands = makeBands(frame.width(), frame.height());
-  const std::vector<std::vector<int>> bandPolygons =
-      polygonsByBand(screen, inMadeOrder(screen), frame.height());
-  std::vector<ZBufferCounters> bandCounters(bands.size());
-  renderTiles(bands, settings.threads, observer, [&](const Tile& band) {
-    drawBand(screen, band, bandPolygons[band.index], buffer, frame, bandCounters[band.index]);
-  });
-
-  ZBufferCounters total;
-  for (const ZBufferCounters& counters : bandCounters) {
-    total.depthTests += counters.depthTests;
-    total.pixelsWritten += counters.pixelsWritten;
-  }
-  stats.add("depth_tests", static_cast<double>(total.depthTests));
-  stats.add("pixels_written", static_cast<double>(total.pixelsWritten));
+  const ZBufferCounters counters = drawInBands<ZBufferCounters>(
+      workers, screen, inMadeOrder(screen), frame.width(), frame.height(),
+      [&](const PixelRect& band, std::span<const int> polygons, ZBufferCounters& bandCounters) {
+        drawBand(screen, band, polygons, buffer, frame, bandCounters);
+      });
+  stats.add("depth_tests", static_cast<double>(counters.depthTests));
+  stats.add("pixels_written", static_cast<double>(counters.pixelsWritten));
   stats.add("z_buffer_bytes", static_cast<double>(buffer.pixels * (sizeof(float) + sizeof(int))));
 }
 

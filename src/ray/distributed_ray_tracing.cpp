@@ -1,19 +1,141 @@
+// Distributed ray tracing, after Cook, Porter and Carpenter (1984).
+//
+// Whitted's ray tracer takes one ray for each choice that light could make:
+// the eye is a pinhole, the shutter opens for an instant, a light is a point,
+// a mirror is perfect. The fuzzy phenomena of real images are averages over
+// those choices, and Cook's insight is that the rays a pixel already takes
+// for anti-aliasing can sample them at no extra cost. Each of the pixel's n
+// samples carries a value in each of five dimensions:
+//   pixel  where in the pixel its ray passes (anti-aliasing);
+//   lens   where on a thin lens it leaves from: the ray passes through the
+//          point the pinhole ray meets on the plane in focus, so that plane
+//          stays sharp and the rest blurs with its distance (depth of field);
+//   time   when in the shutter interval it travels: moving shapes are where
+//          that fraction of their motion has taken them (motion blur);
+//   light  where on each area light its shadow rays aim (soft shadows);
+//   gloss  where around the ideal direction its reflected and refracted rays
+//          go, within a cone whose half-angle's tangent is the material's
+//          roughness (gloss and translucency).
+// Each dimension's n values are stratified (jittered) on their own and then
+// shuffled apart (Cook, "Stochastic sampling in computer graphics", ACM TOG
+// 1986), so that every dimension is well spread and no two are correlated:
+// the sample in the pixel's top-left cell does not always take the lens's
+// top-left too. Surfaces deeper along a path draw fresh random values. The
+// recursion itself is Whitted's (ray_tracing.cpp), asked these choices
+// instead of his single ray; with no lens, no shutter interval, no area light
+// and no roughness, the image is Whitted's with the same samples.
 #include "ray/distributed_ray_tracing.hpp"
 
-#include "ray/image_sampler.hpp"
-#include "ray/recursive_tracer.hpp"
+#include "ray/ray_tracing.hpp"
+#include "scene/light.hpp"
 
 namespace rise {
+
+const AlgorithmDescription& DistributedRayTracer::description() const {
+  static const AlgorithmDescription description = rayTracingAlgorithm(
+      "distributed-ray-tracing",
+      "Cook's distributed ray tracing: depth of field, motion blur, soft shadows, gloss",
+      "R. L. Cook, T. Porter, L. Carpenter, Distributed ray tracing, SIGGRAPH 1984",
+      {Effect::Shadows, Effect::Reflection, Effect::Refraction, Effect::DepthOfField,
+       Effect::MotionBlur, Effect::SoftShadows, Effect::Gloss});
+  return description;
+}
+
 namespace {
 
-// The path's choices: at the surface seen from the eye, the camera sample's
-// own stratified light and gloss values; deeper, fresh random ones.
-class StratifiedPathSampler final : public PathSampler {
- public:
-  StratifiedPathSampler(const CameraSample& sample, Rng& rng) : sample_(sample), rng_(rng) {}
+// One sample's values in the five dimensions, each in [0, 1).
+struct CameraSample {
+  Vec2 lens;
+  float time;
+  Vec2 light;
+  Vec2 gloss;
+};
 
-  Vec2 lightSample(int depth) override { return depth == 1 ? sample_.light : random(); }
-  Vec2 glossSample(int depth) override { return depth == 1 ? sample_.gloss : random(); }
+// The samples of one pixel, each dimension stratified on its own (uniformly
+// random for the random pattern) and shuffled. Kept across the pixels of a
+// tile to spare an allocation per pixel.
+class CameraSampleSet {
+ public:
+  const std::vector<Vec2>& generate(const PixelSampling& sampling, Rng& rng) {
+    const int n = sampling.samples;
+    const bool random = sampling.pattern == SamplePattern::Random;
+    const SamplePattern spread = random ? SamplePattern::Random : SamplePattern::Jittered;
+    samplePositions(sampling.pattern, n, rng, pixel_);
+    samplePositions(spread, n, rng, lens_);
+    samplePositions(spread, n, rng, light_);
+    samplePositions(spread, n, rng, gloss_);
+    jitteredValues(n, rng, time_);
+    if (random)
+      for (float& t : time_) t = rng.uniform();
+    shuffle(lens_, rng);
+    shuffle(light_, rng);
+    shuffle(gloss_, rng);
+    shuffle(time_, rng);
+    return pixel_;
+  }
+
+  // Where sample i lies in its pixel, from the top-left corner.
+  const Vec2& offset(int i) const { return pixel_[static_cast<std::size_t>(i)]; }
+  CameraSample operator[](int i) const {
+    const auto at = static_cast<std::size_t>(i);
+    return {lens_[at], time_[at], light_[at], gloss_[at]};
+  }
+
+ private:
+  std::vector<Vec2> pixel_, lens_, light_, gloss_;
+  std::vector<float> time_;
+};
+
+// A sample whose every dimension but the pixel's is drawn at random: the
+// samples adaptive supersampling adds one by one.
+CameraSample randomCameraSample(Rng& rng) {
+  return {{rng.uniform(), rng.uniform()},
+          rng.uniform(),
+          {rng.uniform(), rng.uniform()},
+          {rng.uniform(), rng.uniform()}};
+}
+
+// The ray through the raster position from the point of a thin lens that
+// `lens` picks, aimed at the point the pinhole ray meets on the plane in
+// focus.
+Ray thinLensRay(const ViewFrame& view, const Vec2& raster, const Vec2& lens) {
+  const Ray pinhole = view.primaryRay(raster.x, raster.y);
+  if (view.lensRadius() == 0.0f) return pinhole;
+  const Vec3 inFocus =
+      pinhole.at(view.focalDistance() / glm::dot(pinhole.direction, view.forward()));
+  const Vec2 onLens = view.lensPoint(lens);
+  const Vec3 origin = view.eye() + onLens.x * view.right() + onLens.y * view.up();
+  return Ray{origin, glm::normalize(inFocus - origin)};
+}
+
+// A direction spread around `ideal` (unit) within a cone whose half-angle has
+// the tangent `roughness`, chosen by the sample u. The spread direction is
+// kept on the same side of the surface as the ideal one, mirrored across it
+// if it strayed.
+Vec3 spread(const Vec3& ideal, float roughness, const Vec2& u, const Vec3& normal) {
+  if (roughness == 0.0f) return ideal;
+  Vec3 across, up;
+  orthonormalBasis(ideal, across, up);
+  const Vec2 offset = roughness * squareToDisk(u);
+  Vec3 direction = glm::normalize(ideal + offset.x * across + offset.y * up);
+  const float idealSide = glm::dot(ideal, normal);
+  const float side = glm::dot(direction, normal);
+  if (side * idealSide < 0.0f) direction -= 2.0f * side * normal;
+  return direction;
+}
+
+// The path's choices: at the surface seen from the eye, the sample's own
+// stratified light and gloss values; deeper, fresh random ones.
+class DistributedChoices final : public PathChoices {
+ public:
+  DistributedChoices(const CameraSample& sample, Rng& rng) : sample_(sample), rng_(rng) {}
+
+  LightSample aimAt(const Light& light, const Vec3& point, int depth) override {
+    return light.illuminate(point, depth == 1 ? sample_.light : random());
+  }
+  Vec3 scatter(const Vec3& ideal, float roughness, const Vec3& normal, int depth) override {
+    return spread(ideal, roughness, depth == 1 ? sample_.gloss : random(), normal);
+  }
 
  private:
   Vec2 random() { return {rng_.uniform(), rng_.uniform()}; }
@@ -22,35 +144,40 @@ class StratifiedPathSampler final : public PathSampler {
   Rng& rng_;
 };
 
-class ThinLensTracer final : public SampleTracer {
- public:
-  ThinLensTracer(const Scene& scene, const SceneIntersector& intersector,
-                 const RenderSettings& settings)
-      : view_(scene.camera, settings.width, settings.height),
-        tracer_(scene, intersector, settings.maxDepth),
-        motionBlur_(scene.camera.hasMotionBlur()) {}
-
-  SampleResult trace(const CameraSample& sample, Rng& rng, TraceCounters& counters) const override {
-    Ray ray = view_.thinLensRay(sample.raster, sample.lens);
-    // Rays carry the time as a fraction of the shutter interval: moving
-    // shapes are where that fraction of their motion has taken them.
-    ray.time = motionBlur_ ? sample.time : 0.0f;
-    StratifiedPathSampler paths(sample, rng);
-    return tracer_.tracePrimary(ray, paths, counters);
-  }
-  bool usesEffectSamples() const override { return true; }
-
- private:
-  ViewFrame view_;
-  RecursiveTracer tracer_;
-  bool motionBlur_;
-};
-
 }  // namespace
 
 RenderResult DistributedRayTracer::render(const Scene& scene, const RenderSettings& settings,
                                           RenderObserver& observer) const {
-  return renderByTracing<ThinLensTracer>(scene, settings, observer);
+  const SceneIntersector intersector(scene, settings.accel, settings.threads);
+  const TracingContext context{scene, intersector, settings.maxDepth};
+  const ViewFrame view(scene.camera, settings.width, settings.height);
+  const bool motionBlur = scene.camera.hasMotionBlur();
+  const auto traceSample = [&](const Vec2& raster, const CameraSample& sample, Rng& rng,
+                               TraceCounters& counters) {
+    Ray ray = thinLensRay(view, raster, sample.lens);
+    // Rays carry the time as a fraction of the shutter interval.
+    ray.time = motionBlur ? sample.time : 0.0f;
+    DistributedChoices choices(sample, rng);
+    return tracePrimary(context, ray, choices, counters);
+  };
+  const PixelSampling& sampling = settings.sampling;
+  RenderResult result = traceImage(settings, observer, [&](TileTrace& tile) {
+    if (sampling.pattern == SamplePattern::Adaptive)
+      return sampleAdaptively(tile, settings, [&](const Vec2& raster, Rng& rng, TraceCounters& c) {
+        return traceSample(raster, randomCameraSample(rng), rng, c);
+      });
+    CameraSampleSet samples;
+    tracePixels(
+        tile, settings.seed,
+        [&](const glm::ivec2&, Rng& rng) -> const std::vector<Vec2>& {
+          return samples.generate(sampling, rng);
+        },
+        [&](const glm::ivec2& pixel, int i, Rng& rng, TraceCounters& counters) {
+          return traceSample(Vec2(pixel) + samples.offset(i), samples[i], rng, counters);
+        });
+  });
+  intersector.addBuildStats(result.stats);
+  return result;
 }
 
 }  // namespace rise

@@ -1,68 +1,92 @@
-// How a ray tracer turns samples into an image: for each pixel, a set of
-// camera samples placed by the render's pattern, each traced and added to the
-// film under the reconstruction filter; or, for the adaptive pattern,
-// Whitted's (1980) refinement of the pixel's square wherever its corners
-// disagree.
-//
-// A camera sample has five dimensions, each in [0, 1): where in the pixel,
-// where on the lens, when in the shutter interval, where on an area light,
-// where in a gloss lobe. Following Cook (1986, "Stochastic sampling in
-// computer graphics"), each dimension's n values are stratified (jittered)
-// on their own and then shuffled, so that every dimension is well spread and
-// no two are correlated: the sample in the pixel's top-left cell does not
-// always take the lens's top-left too.
+// What the ray tracers share around their algorithms: the image is cut into
+// tiles that the workers trace apart; each sample a pixel takes is added to
+// the film, where the reconstruction filter weighs it (render/film.hpp), and
+// what its primary ray hit to the auxiliary buffers. Which samples a pixel
+// takes and how each is traced is each algorithm's own: see ray_tracing.cpp
+// (Whitted) and distributed_ray_tracing.cpp (Cook).
 #pragma once
 
+#include <cstdint>
+#include <functional>
+#include <vector>
+
 #include "core/random.hpp"
-#include "ray/scene_intersector.hpp"
 #include "ray/trace_counters.hpp"
+#include "render/film.hpp"
 #include "render/renderer.hpp"
 
 namespace rise {
 
-struct CameraSample {
-  Vec2 raster;  // the continuous raster position: pixel (i, j) covers [i, i+1) x [j, j+1)
-  Vec2 lens;
-  float time;
-  Vec2 light;
-  Vec2 gloss;
-};
-
-// What tracing one camera sample found: its colour, and for the auxiliary
-// buffers what the primary ray hit.
+// What tracing one sample found: its colour, and for the auxiliary buffers
+// what the primary ray hit.
 struct SampleResult {
   Color color;
   float depth = kInfinity;
   Vec3 normal{0.0f};
 };
 
-// A ray tracer, as the image sampler sees it.
-class SampleTracer {
+// The description of a ray tracer: what the family shares (its buffers, the
+// settings it reads) with the algorithm's own name, summary, citation and
+// effects.
+AlgorithmDescription rayTracingAlgorithm(std::string_view name, std::string_view summary,
+                                         std::string_view citation, std::vector<Effect> effects);
+
+// A tile being traced: where its samples go and what they cost.
+class TileTrace {
  public:
-  virtual ~SampleTracer() = default;
-  virtual SampleResult trace(const CameraSample& sample, Rng& rng,
-                             TraceCounters& counters) const = 0;
-  // Whether it reads the dimensions beyond the pixel (lens, time, light,
-  // gloss). A tracer that does not is given their centres, and the sampler
-  // spares itself stratifying and shuffling them for every pixel.
-  virtual bool usesEffectSamples() const = 0;
+  TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers);
+
+  const PixelRect& area() const { return area_; }
+
+  // A sample taken in `pixel` at `offset` from its top-left corner.
+  void addSample(const glm::ivec2& pixel, const Vec2& offset, const Color& color) {
+    film_.addSample(pixel, offset, color);
+  }
+  // The pixel's auxiliary buffers: what `shown` hit, and the intersection
+  // tests the pixel cost.
+  void recordBuffers(const glm::ivec2& pixel, const SampleResult& shown, std::uint64_t tests);
+
+  const FilmTile& film() const { return film_; }
+
+  TraceCounters counters;
+  std::uint64_t refinedPixels = 0;  // by adaptive supersampling
+
+ private:
+  PixelRect area_;
+  FilmTile film_;
+  Image& depth_;
+  Image& normal_;
+  Image& cost_;
 };
 
-// Renders the image by sampling every pixel with `tracer`, in parallel tiles,
-// and returns it with the auxiliary buffers (taken from each pixel's first
-// sample; with the adaptive pattern, its top-left corner) and the counters.
-RenderResult renderBySampling(const RenderSettings& settings, RenderObserver& observer,
-                              const SampleTracer& tracer);
+// Renders the image by calling traceTile for every tile, on the workers, and
+// returns it with the auxiliary buffers and the counters summed in tile order.
+RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer,
+                        const std::function<void(TileTrace&)>& traceTile);
 
-// The same with a `Tracer(scene, intersector, settings)` over the scene's
-// acceleration structure, built first, whose build statistics are added.
-template <typename Tracer>
-RenderResult renderByTracing(const Scene& scene, const RenderSettings& settings,
-                             RenderObserver& observer) {
-  const SceneIntersector intersector(scene, settings.accel, settings.threads);
-  RenderResult result = renderBySampling(settings, observer, Tracer(scene, intersector, settings));
-  intersector.addBuildStats(result.stats);
-  return result;
+// The common pixel loop: for each pixel of the tile, a generator seeded by
+// the pixel alone (so that the image does not depend on which thread traced
+// it); place(pixel, rng) puts the pixel's samples and returns their offsets
+// in it; trace(pixel, i, rng, counters) traces sample i. Every sample goes to
+// the film, the first to the buffers.
+template <typename Place, typename Trace>
+void tracePixels(TileTrace& tile, std::uint64_t seed, const Place& place, const Trace& trace) {
+  const PixelRect& area = tile.area();
+  for (int y = area.y0; y < area.y1; ++y) {
+    for (int x = area.x0; x < area.x1; ++x) {
+      const glm::ivec2 pixel(x, y);
+      Rng rng(pixelSeed(seed, x, y));
+      const std::vector<Vec2>& offsets = place(pixel, rng);
+      const std::uint64_t testsBefore = tile.counters.intersections.tests;
+      SampleResult first;
+      for (int i = 0; i < static_cast<int>(offsets.size()); ++i) {
+        const SampleResult sample = trace(pixel, i, rng, tile.counters);
+        tile.addSample(pixel, offsets[static_cast<std::size_t>(i)], sample.color);
+        if (i == 0) first = sample;
+      }
+      tile.recordBuffers(pixel, first, tile.counters.intersections.tests - testsBefore);
+    }
+  }
 }
 
 }  // namespace rise

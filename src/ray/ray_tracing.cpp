@@ -1,35 +1,294 @@
+// Whitted ray tracing, after Whitted (1980), as in the original RISE report.
+//
+// A ray leaves the eye through each sample position of a pixel and finds the
+// nearest surface it hits (Intersect). There the colour is computed (Shade):
+//   - the Phong model's ambient light, and each light that a shadow ray from
+//     the point reaches: an opaque shape in the way blocks it, a transparent
+//     one filters it by its transmission and colour;
+//   - the mirror ray, reflected about the normal, traced recursively and
+//     weighted by the material's `reflection`;
+//   - the refracted ray, bent by Snell's law with the relative index of the
+//     two sides, traced recursively, weighted by the `transmission` and
+//     tinted by the colour; past the critical angle there is no refracted ray
+//     and the light reflects totally, along the mirror direction.
+// A ray that hits nothing takes the background colour; the recursion stops
+// at the maximum depth. The rays of one pixel form a tree: each node a hit,
+// its children the shadow, reflected and refracted rays, and the pixel's
+// colour the sum of what every node's Phong terms add, weighted by the
+// products of the weights on the way up.
+//
+// Whitted's ray tracer sees the scene at one instant, the shutter's opening,
+// and answers every choice of a path with one ray: an area light acts as a
+// point at its centre, a rough material as a smooth one. Anti-aliasing comes
+// from several samples in each pixel, placed by the render's pattern, or from
+// Whitted's own adaptive supersampling: a pixel's corners are traced first,
+// and where their colours differ by more than a threshold the square is
+// quartered and its new corners traced, down to a given depth.
 #include "ray/ray_tracing.hpp"
 
-#include "ray/image_sampler.hpp"
-#include "ray/recursive_tracer.hpp"
+#include <algorithm>
+#include <array>
+
+#include "scene/light.hpp"
+#include "shading/phong.hpp"
 
 namespace rise {
+
+const AlgorithmDescription& WhittedRayTracer::description() const {
+  static const AlgorithmDescription description = rayTracingAlgorithm(
+      "ray-tracing", "Whitted ray tracing: shadows, mirror reflection and refraction, recursively",
+      "T. Whitted, An improved illumination model for shaded display, CACM 23(6), 1980",
+      {Effect::Shadows, Effect::Reflection, Effect::Refraction});
+  return description;
+}
+
+// The surface at a hit as the shading sees it: the normal turned towards the
+// side the ray came from, and whether the ray is entering the solid.
+struct ShadingFrame {
+  SurfacePoint surface;
+  Vec3 normal;         // the geometric normal, unit, on the ray's side of the surface
+  Vec3 shadingNormal;  // the smooth normal for shading, on the same side
+  Vec3 toViewer;       // unit, back along the ray
+  float time;          // the ray's instant, which the rays it spawns keep
+  bool entering;
+};
+
 namespace {
 
-class PinholeTracer final : public SampleTracer {
- public:
-  PinholeTracer(const Scene& scene, const SceneIntersector& intersector,
-                const RenderSettings& settings)
-      : view_(scene.camera, settings.width, settings.height),
-        tracer_(scene, intersector, settings.maxDepth) {}
+ShadingFrame shadingFrame(const Ray& ray, const Hit& hit, const Material& material) {
+  ShadingFrame frame;
+  frame.surface = hit.shape->surfaceAt(ray, hit);
+  frame.surface.shadingNormal = material.shadingNormalAt(frame.surface);
+  frame.toViewer = -glm::normalize(ray.direction);
+  frame.time = ray.time;
+  frame.entering = glm::dot(frame.surface.normal, frame.toViewer) > 0.0f;
+  frame.normal = frame.entering ? frame.surface.normal : -frame.surface.normal;
+  frame.shadingNormal = frame.entering ? frame.surface.shadingNormal : -frame.surface.shadingNormal;
+  return frame;
+}
 
-  SampleResult trace(const CameraSample& sample, Rng&, TraceCounters& counters) const override {
-    CentredPathSampler centred;
-    return tracer_.tracePrimary(view_.primaryRay(sample.raster.x, sample.raster.y), centred,
-                                counters);
+// A ray leaving the surface along `direction`, started a little off the
+// surface on the side it travels to, so that it does not hit it again.
+Ray spawnRay(const ShadingFrame& frame, const Vec3& direction) {
+  const float side = glm::dot(direction, frame.normal) >= 0.0f ? 1.0f : -1.0f;
+  return Ray{frame.surface.position + (side * kRayEpsilon) * frame.normal, direction, frame.time};
+}
+
+// One ray's journey and the rays it gives rise to.
+class Recursion {
+ public:
+  Recursion(const TracingContext& context, PathChoices& choices, TraceCounters& counters)
+      : context_(context), choices_(choices), counters_(counters) {}
+
+  // Intersect: the nearest hit, shaded, or the background.
+  Color trace(const Ray& ray, int depth) {
+    Hit hit;
+    if (!context_.intersector.nearest(ray, 0.0f, hit, counters_.intersections))
+      return context_.scene.image.background;
+    const Material& material = context_.scene.materialOf(*hit.shape);
+    return shade(shadingFrame(ray, hit, material), material, depth);
   }
-  bool usesEffectSamples() const override { return false; }
+
+  // Shade: the local Phong model, then the mirror and the refracted rays.
+  Color shade(const ShadingFrame& frame, const Material& material, int depth) {
+    const SurfaceColors colors = material.colorsAt(frame.surface);
+    Color color = phongAmbient(material, colors, context_.scene.ambient) +
+                  directLight(frame, material, colors, depth);
+    if (depth >= context_.maxDepth) return color;
+    if (material.reflection > 0.0f)
+      color += material.reflection * reflected(frame, material, depth);
+    if (material.transmission > 0.0f)
+      color += material.transmission * material.color * refracted(frame, material, depth);
+    return color;
+  }
 
  private:
-  ViewFrame view_;
-  RecursiveTracer tracer_;
+  // The Phong terms of every light that a shadow ray reaches.
+  Color directLight(const ShadingFrame& frame, const Material& material,
+                    const SurfaceColors& colors, int depth) {
+    Color color(0.0f);
+    for (const auto& light : context_.scene.lights) {
+      const LightSample sample = choices_.aimAt(*light, frame.surface.position, depth);
+      if (glm::dot(frame.normal, sample.toLight) <= 0.0f) continue;
+      ++counters_.shadowRays;
+      const Color visible = context_.intersector.transmittance(
+          spawnRay(frame, sample.toLight), 0.0f, sample.distance, counters_.intersections);
+      if (visible == Color(0.0f)) continue;
+      color += visible * phongDirect(material, colors, frame.shadingNormal, frame.toViewer, sample);
+    }
+    return color;
+  }
+
+  Color reflected(const ShadingFrame& frame, const Material& material, int depth) {
+    ++counters_.reflectionRays;
+    const Vec3 mirror = glm::reflect(-frame.toViewer, frame.shadingNormal);
+    const Vec3 direction = choices_.scatter(mirror, material.roughness, frame.normal, depth);
+    return trace(spawnRay(frame, direction), depth + 1);
+  }
+
+  // Snell's law with the relative index of the two sides; past the critical
+  // angle there is no refracted ray and the light reflects totally.
+  Color refracted(const ShadingFrame& frame, const Material& material, int depth) {
+    ++counters_.refractionRays;
+    const float eta = frame.entering ? 1.0f / material.ior : material.ior;
+    Vec3 direction = glm::refract(-frame.toViewer, frame.shadingNormal, eta);
+    if (direction == Vec3(0.0f)) direction = glm::reflect(-frame.toViewer, frame.shadingNormal);
+    direction = choices_.scatter(direction, material.roughness, frame.normal, depth);
+    return trace(spawnRay(frame, direction), depth + 1);
+  }
+
+  const TracingContext& context_;
+  PathChoices& choices_;
+  TraceCounters& counters_;
+};
+
+// Whitted's one ray for every choice: the light's centre, the ideal
+// direction.
+class SingleRayChoices final : public PathChoices {
+ public:
+  LightSample aimAt(const Light& light, const Vec3& point, int) override {
+    return light.illuminate(point);
+  }
+  Vec3 scatter(const Vec3& ideal, float, const Vec3&, int) override { return ideal; }
 };
 
 }  // namespace
 
+SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathChoices& choices,
+                          TraceCounters& counters) {
+  ++counters.primaryRays;
+  Hit hit;
+  if (!context.intersector.nearest(ray, 0.0f, hit, counters.intersections))
+    return {context.scene.image.background};
+  const Material& material = context.scene.materialOf(*hit.shape);
+  const ShadingFrame frame = shadingFrame(ray, hit, material);
+  Recursion recursion(context, choices, counters);
+  return {recursion.shade(frame, material, 1), hit.t * glm::length(ray.direction),
+          frame.surface.normal};
+}
+
+namespace {
+
+float largestDifference(const std::array<Color, 4>& corners) {
+  float largest = 0.0f;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      largest = std::max(largest, maxComponent(glm::abs(corners[i] - corners[j])));
+  return largest;
+}
+
+// Adaptive supersampling of one square of the image: the average of its
+// corners if they agree, or else of its four quarters, each refined in turn,
+// down to `levelsLeft` more subdivisions. Corners are ordered top-left,
+// top-right, bottom-left, bottom-right.
+class AdaptiveRefinement {
+ public:
+  AdaptiveRefinement(const TraceAt& traceAt, float threshold, Rng& rng, TraceCounters& counters)
+      : traceAt_(traceAt), threshold_(threshold), rng_(rng), counters_(counters) {}
+
+  Color refine(const Vec2& topLeft, float size, const std::array<Color, 4>& corners,
+               int levelsLeft) {
+    if (levelsLeft == 0 || largestDifference(corners) <= threshold_)
+      return 0.25f * (corners[0] + corners[1] + corners[2] + corners[3]);
+    refined_ = true;
+    const float half = 0.5f * size;
+    const Color top = colorAt(topLeft + Vec2(half, 0.0f));
+    const Color left = colorAt(topLeft + Vec2(0.0f, half));
+    const Color centre = colorAt(topLeft + Vec2(half, half));
+    const Color right = colorAt(topLeft + Vec2(size, half));
+    const Color bottom = colorAt(topLeft + Vec2(half, size));
+    const int next = levelsLeft - 1;
+    return 0.25f *
+           (refine(topLeft, half, {corners[0], top, left, centre}, next) +
+            refine(topLeft + Vec2(half, 0.0f), half, {top, corners[1], centre, right}, next) +
+            refine(topLeft + Vec2(0.0f, half), half, {left, centre, corners[2], bottom}, next) +
+            refine(topLeft + Vec2(half, half), half, {centre, right, bottom, corners[3]}, next));
+  }
+
+  bool refined() const { return refined_; }
+
+ private:
+  Color colorAt(const Vec2& raster) { return traceAt_(raster, rng_, counters_).color; }
+
+  const TraceAt& traceAt_;
+  float threshold_;
+  Rng& rng_;
+  TraceCounters& counters_;
+  bool refined_ = false;
+};
+
+// The subdivisions that `samples` allow: 16 samples, two levels of quarters.
+int adaptiveLevels(int samples) {
+  int levels = 0;
+  for (int cells = 1; cells < samples; cells *= 4) ++levels;
+  return levels;
+}
+
+}  // namespace
+
+// The tile's pixel corners are traced once each, shared by the pixels around
+// them; each pixel then refines its own square.
+void sampleAdaptively(TileTrace& tile, const RenderSettings& settings, const TraceAt& traceAt) {
+  const PixelRect& area = tile.area();
+  TraceCounters& counters = tile.counters;
+  std::vector<SampleResult> corners;
+  std::vector<std::uint64_t> cornerTests;
+  for (int y = area.y0; y <= area.y1; ++y) {
+    for (int x = area.x0; x <= area.x1; ++x) {
+      Rng rng(pixelSeed(settings.seed, x, y), 1);
+      const std::uint64_t testsBefore = counters.intersections.tests;
+      corners.push_back(traceAt(Vec2(static_cast<float>(x), static_cast<float>(y)), rng, counters));
+      cornerTests.push_back(counters.intersections.tests - testsBefore);
+    }
+  }
+  const auto corner = [&](int x, int y) {
+    return static_cast<std::size_t>(y - area.y0) * (area.width() + 1) + (x - area.x0);
+  };
+  const int levels = adaptiveLevels(settings.sampling.samples);
+  for (int y = area.y0; y < area.y1; ++y) {
+    for (int x = area.x0; x < area.x1; ++x) {
+      Rng rng(pixelSeed(settings.seed, x, y), 2);
+      const std::uint64_t testsBefore = counters.intersections.tests;
+      AdaptiveRefinement refinement(traceAt, settings.sampling.adaptiveThreshold, rng, counters);
+      const Color color =
+          refinement.refine(Vec2(static_cast<float>(x), static_cast<float>(y)), 1.0f,
+                            {corners[corner(x, y)].color, corners[corner(x + 1, y)].color,
+                             corners[corner(x, y + 1)].color, corners[corner(x + 1, y + 1)].color},
+                            levels);
+      tile.addSample({x, y}, Vec2(0.5f), color);
+      if (refinement.refined()) ++tile.refinedPixels;
+      tile.recordBuffers({x, y}, corners[corner(x, y)],
+                         cornerTests[corner(x, y)] + counters.intersections.tests - testsBefore);
+    }
+  }
+}
+
 RenderResult WhittedRayTracer::render(const Scene& scene, const RenderSettings& settings,
                                       RenderObserver& observer) const {
-  return renderByTracing<PinholeTracer>(scene, settings, observer);
+  const SceneIntersector intersector(scene, settings.accel, settings.threads);
+  const TracingContext context{scene, intersector, settings.maxDepth};
+  const ViewFrame view(scene.camera, settings.width, settings.height);
+  const TraceAt traceAt = [&](const Vec2& raster, Rng&, TraceCounters& counters) {
+    SingleRayChoices single;
+    return tracePrimary(context, view.primaryRay(raster.x, raster.y), single, counters);
+  };
+  const PixelSampling& sampling = settings.sampling;
+  RenderResult result = traceImage(settings, observer, [&](TileTrace& tile) {
+    if (sampling.pattern == SamplePattern::Adaptive)
+      return sampleAdaptively(tile, settings, traceAt);
+    std::vector<Vec2> offsets;
+    tracePixels(
+        tile, settings.seed,
+        [&](const glm::ivec2&, Rng& rng) -> const std::vector<Vec2>& {
+          samplePositions(sampling.pattern, sampling.samples, rng, offsets);
+          return offsets;
+        },
+        [&](const glm::ivec2& pixel, int i, Rng& rng, TraceCounters& counters) {
+          return traceAt(Vec2(pixel) + offsets[static_cast<std::size_t>(i)], rng, counters);
+        });
+  });
+  intersector.addBuildStats(result.stats);
+  return result;
 }
 
 }  // namespace rise

@@ -13,24 +13,39 @@ float gaussian(float x) { return std::exp(-x * x / (2.0f * kGaussianSigma * kGau
 
 float radiusOf(FilterKind kind) {
   switch (kind) {
-    case FilterKind::Box: return 0.5f;
-    case FilterKind::Tent: return 1.0f;
-    case FilterKind::Gaussian: return 3.0f * kGaussianSigma;
+    case FilterKind::Box:
+      return 0.5f;
+    case FilterKind::Tent:
+      return 1.0f;
+    case FilterKind::Gaussian:
+      return 3.0f * kGaussianSigma;
   }
   return 0.5f;
 }
 
 }  // namespace
 
-ReconstructionFilter::ReconstructionFilter(FilterKind kind) : kind_(kind), radius_(radiusOf(kind)) {}
+std::vector<PixelRect> makeTiles(int width, int height, int tileSize) {
+  std::vector<PixelRect> tiles;
+  for (int y = 0; y < height; y += tileSize)
+    for (int x = 0; x < width; x += tileSize)
+      tiles.push_back({x, y, std::min(x + tileSize, width), std::min(y + tileSize, height)});
+  return tiles;
+}
+
+ReconstructionFilter::ReconstructionFilter(FilterKind kind)
+    : kind_(kind), radius_(radiusOf(kind)) {}
 
 float ReconstructionFilter::weight1D(float offset) const {
   switch (kind_) {
     // Half-open, so that a sample on the border of two pixels counts once.
-    case FilterKind::Box: return offset >= -0.5f && offset < 0.5f ? 1.0f : 0.0f;
-    case FilterKind::Tent: return std::max(0.0f, 1.0f - std::abs(offset));
+    case FilterKind::Box:
+      return offset >= -0.5f && offset < 0.5f ? 1.0f : 0.0f;
+    case FilterKind::Tent:
+      return std::max(0.0f, 1.0f - std::abs(offset));
     // Lowered so that it reaches zero at its radius instead of stopping short.
-    case FilterKind::Gaussian: return std::max(0.0f, gaussian(offset) - gaussian(radius_));
+    case FilterKind::Gaussian:
+      return std::max(0.0f, gaussian(offset) - gaussian(radius_));
   }
   return 0.0f;
 }
@@ -46,7 +61,7 @@ Film::Film(int width, int height, FilterKind filter)
       weightedSum_(static_cast<std::size_t>(width) * height, Color(0.0f)),
       weightSum_(static_cast<std::size_t>(width) * height, 0.0f) {}
 
-FilmTile Film::tileFor(const Tile& tile) const {
+FilmTile Film::tileFor(const PixelRect& tile) const {
   const int margin = static_cast<int>(std::ceil(filter_.radius() - 0.5f));
   return FilmTile(filter_, std::max(0, tile.x0 - margin), std::max(0, tile.y0 - margin),
                   std::min(width_, tile.x1 + margin), std::min(height_, tile.y1 + margin));
@@ -99,8 +114,9 @@ void FilmTile::addSample(const glm::ivec2& pixel, const Vec2& offset, const Colo
   const int reach = static_cast<int>(std::ceil(filter_->radius()));
   for (int y = std::max(y0_, pixel.y - reach); y <= std::min(y1_ - 1, pixel.y + reach); ++y) {
     for (int x = std::max(x0_, pixel.x - reach); x <= std::min(x1_ - 1, pixel.x + reach); ++x) {
-      const Vec2 fromCentre = Vec2(static_cast<float>(pixel.x - x), static_cast<float>(pixel.y - y)) +
-                              (offset - Vec2(0.5f));
+      const Vec2 fromCentre =
+          Vec2(static_cast<float>(pixel.x - x), static_cast<float>(pixel.y - y)) +
+          (offset - Vec2(0.5f));
       const float weight = filter_->weight(fromCentre);
       if (weight == 0.0f) continue;
       weightedSum_[index(x, y)] += weight * color;

@@ -4,9 +4,12 @@
 
 #include "core/image.hpp"
 #include "core/sampling.hpp"
-#include "render/tiles.hpp"
 
 namespace rise {
+
+// The image cut into square tiles, row by row: the pieces of the film that
+// threads fill apart.
+std::vector<PixelRect> makeTiles(int width, int height, int tileSize = 16);
 
 // A reconstruction filter: how much a sample counts towards a pixel, by its
 // offset from the pixel's centre, in pixels.
@@ -37,7 +40,7 @@ class Film {
   Film(int width, int height, FilterKind filter);
 
   // An empty tile covering `tile`'s pixels and the margin its samples reach.
-  FilmTile tileFor(const Tile& tile) const;
+  FilmTile tileFor(const PixelRect& tile) const;
   void merge(const FilmTile& tile);
 
   // The weighted average at every pixel; black where no sample reached.

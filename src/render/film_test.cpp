@@ -22,10 +22,10 @@ TEST(ReconstructionFilter, WeightsByDistanceFromTheCentre) {
 
 // Merges every tile of a film that received `perPixel` samples of `color` at
 // the given offsets in each pixel.
-Image filmOf(FilterKind filter, int width, int height,
-             const std::function<Color(int, int)>& color, const std::vector<Vec2>& offsets) {
+Image filmOf(FilterKind filter, int width, int height, const std::function<Color(int, int)>& color,
+             const std::vector<Vec2>& offsets) {
   Film film(width, height, filter);
-  for (const Tile& tile : makeTiles(width, height, 4)) {
+  for (const PixelRect& tile : makeTiles(width, height, 4)) {
     FilmTile filmTile = film.tileFor(tile);
     for (int y = tile.y0; y < tile.y1; ++y)
       for (int x = tile.x0; x < tile.x1; ++x)
@@ -36,17 +36,16 @@ Image filmOf(FilterKind filter, int width, int height,
 }
 
 TEST(Film, BoxAveragesEachPixelsOwnSamples) {
-  const Image image = filmOf(
-      FilterKind::Box, 8, 8, [](int x, int) { return Color(static_cast<float>(x)); },
-      {{0.25f, 0.25f}, {0.75f, 0.75f}});
+  const Image image =
+      filmOf(FilterKind::Box, 8, 8, [](int x, int) { return Color(static_cast<float>(x)); },
+             {{0.25f, 0.25f}, {0.75f, 0.75f}});
   for (int x = 0; x < 8; ++x) EXPECT_FLOAT_EQ(image.at(x, 3).r, static_cast<float>(x));
 }
 
 TEST(Film, EveryFilterKeepsAConstantImageConstant) {
   for (FilterKind filter : {FilterKind::Box, FilterKind::Tent, FilterKind::Gaussian}) {
-    const Image image = filmOf(
-        filter, 9, 7, [](int, int) { return Color(0.3f, 0.6f, 0.9f); },
-        {{0.1f, 0.2f}, {0.6f, 0.3f}, {0.4f, 0.9f}});
+    const Image image = filmOf(filter, 9, 7, [](int, int) { return Color(0.3f, 0.6f, 0.9f); },
+                               {{0.1f, 0.2f}, {0.6f, 0.3f}, {0.4f, 0.9f}});
     for (int y = 0; y < 7; ++y)
       for (int x = 0; x < 9; ++x) EXPECT_NEAR(image.at(x, y).g, 0.6f, 1e-5f) << toString(filter);
   }

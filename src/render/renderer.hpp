@@ -3,8 +3,10 @@
 #include <map>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/image.hpp"
+#include "core/parallel.hpp"
 #include "core/stats.hpp"
 #include "render/render_settings.hpp"
 #include "scene/scene.hpp"
@@ -27,11 +29,46 @@ struct RenderResult {
 
 // Watches a render from outside: progress for a bar, cancellation for the
 // studio. The render calls it from its worker threads, one call at a time.
-class RenderObserver {
- public:
-  virtual ~RenderObserver() = default;
-  virtual void onProgress(double /*fractionDone*/) {}
-  virtual bool cancelled() const { return false; }
+class RenderObserver : public Progress {};
+
+// The two families of algorithms: those that project polygons and find the
+// one visible at each pixel (raster/), and those that trace rays (ray/).
+enum class Family { VisibleSurface, RayTracing };
+
+// The settings of RenderSettings that only some algorithms read.
+enum class Option { Shading, Culling, Tessellation, PlaneSize, Accel, MaxDepth };
+inline constexpr Option kAllOptions[] = {Option::Shading,   Option::Culling, Option::Tessellation,
+                                         Option::PlaneSize, Option::Accel,   Option::MaxDepth};
+
+// What an algorithm shows of light beyond the Phong model at each surface.
+enum class Effect {
+  Shadows,
+  Reflection,
+  Refraction,
+  DepthOfField,
+  MotionBlur,
+  SoftShadows,
+  Gloss,
+};
+
+std::string_view toString(Family family);
+std::string_view toString(Option option);  // as on the command line: "shading"
+std::string_view toString(Effect effect);  // in words: "depth of field"
+
+// What an algorithm is and offers, for the command line's help, `rise
+// algorithms`, the compare page, the studio and the tests: they read this
+// instead of lists of their own.
+struct AlgorithmDescription {
+  std::string_view name;      // as typed after -a: "ray-tracing"
+  std::string_view summary;   // what it does, in one line
+  std::string_view citation;  // the paper it follows
+  Family family;
+  std::vector<std::string_view> buffers;  // the auxiliary buffers it writes: "depth", ...
+  std::vector<Option> options;            // the settings it reads beyond the image's
+  std::vector<Effect> effects;
+
+  bool writes(std::string_view buffer) const;
+  bool reads(Option option) const;
 };
 
 // One image synthesis algorithm. The command line, the studio, the tests and
@@ -40,9 +77,8 @@ class Renderer {
  public:
   virtual ~Renderer() = default;
 
-  virtual std::string_view name() const = 0;      // as typed after -a: "ray-tracing"
-  virtual std::string_view summary() const = 0;   // what it does, in one line
-  virtual std::string_view citation() const = 0;  // the paper it follows
+  virtual const AlgorithmDescription& description() const = 0;
+  std::string_view name() const { return description().name; }
 
   virtual RenderResult render(const Scene& scene, const RenderSettings& settings,
                               RenderObserver& observer) const = 0;

@@ -26,13 +26,4 @@ Ray ViewFrame::primaryRay(float x, float y) const {
   return Ray{eye_, glm::normalize(forward_ + sx * right_ + sy * up_)};
 }
 
-Ray ViewFrame::thinLensRay(const Vec2& raster, const Vec2& lens) const {
-  const Ray pinhole = primaryRay(raster.x, raster.y);
-  if (lensRadius_ == 0.0f) return pinhole;
-  const Vec3 inFocus = pinhole.at(focalDistance_ / glm::dot(pinhole.direction, forward_));
-  const Vec2 onLens = lensPoint(lens);
-  const Vec3 origin = eye_ + onLens.x * right_ + onLens.y * up_;
-  return Ray{origin, glm::normalize(inFocus - origin)};
-}
-
 }  // namespace rise

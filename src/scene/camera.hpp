@@ -36,18 +36,12 @@ class ViewFrame {
   // bottom-right, so pixel (i, j)'s centre is (i + 0.5, j + 0.5).
   Ray primaryRay(float x, float y) const;
 
-  // The ray through the raster position `raster` of a thin lens (Cook et
-  // al. 1984): it leaves the lens at the point chosen by the sample `lens`
-  // in the unit square and passes through the point that the pinhole ray
-  // meets on the plane in focus, so that points on that plane stay sharp and
-  // others blur with their distance from it. With no aperture it is the
-  // pinhole ray.
-  Ray thinLensRay(const Vec2& raster, const Vec2& lens) const;
-
   // The point of the lens chosen by the sample `lens` in the unit square, as
   // offsets along right and up from the eye: uniform over the lens's disk,
   // (0, 0) with no aperture.
   Vec2 lensPoint(const Vec2& lens) const { return lensRadius_ * squareToDisk(lens); }
+  float lensRadius() const { return lensRadius_; }
+  // The distance from the eye to the plane in focus, along forward.
   float focalDistance() const { return focalDistance_; }
 
   const Vec3& eye() const { return eye_; }

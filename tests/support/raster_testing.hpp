@@ -11,13 +11,20 @@
 #include <vector>
 
 #include "algorithms/registry.hpp"
+#include "algorithms/settings_for_scene.hpp"
 #include "raster/visible_surface_renderer.hpp"
 #include "scene/shapes/triangle.hpp"
 
 namespace rise::raster_testing {
 
-inline constexpr std::array<std::string_view, 4> kAlgorithms = {"depth-sort", "area-subdivision",
-                                                                "z-buffer", "scanline"};
+// The names of the visible-surface algorithms, from the registry.
+inline std::vector<std::string_view> visibleSurfaceAlgorithms() {
+  std::vector<std::string_view> names;
+  for (const Renderer* renderer : allRenderers())
+    if (renderer->description().family == Family::VisibleSurface) names.push_back(renderer->name());
+  return names;
+}
+inline const std::vector<std::string_view> kAlgorithms = visibleSurfaceAlgorithms();
 
 // An empty scene seen from `eye`, looking at the origin, with one matte grey
 // material (number 0) and ambient light alone, so that every pixel of a
@@ -41,14 +48,6 @@ inline Scene sceneSeenFrom(const Vec3& eye, int width, int height) {
 inline void addTriangle(Scene& scene, const Vec3& a, const Vec3& b, const Vec3& c,
                         int material = 0) {
   scene.shapes.push_back(std::make_unique<Triangle>(std::array{a, b, c}, material));
-}
-
-inline RenderSettings settingsFor(const Scene& scene) {
-  RenderSettings settings;
-  settings.width = scene.image.width;
-  settings.height = scene.image.height;
-  settings.threads = 2;
-  return settings;
 }
 
 inline RenderResult render(std::string_view algorithm, const Scene& scene,

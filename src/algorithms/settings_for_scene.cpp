@@ -1,0 +1,55 @@
+#include "algorithms/settings_for_scene.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/parallel.hpp"
+#include "ray/accelerator.hpp"
+
+namespace rise {
+namespace {
+
+// The image size: the scene's, unless overridden; a single dimension keeps
+// the scene's aspect ratio.
+std::pair<int, int> imageSize(const ImageOverrides& image, const ImageSpec& scene) {
+  const double aspect = static_cast<double>(scene.width) / scene.height;
+  if (image.width && image.height) return {*image.width, *image.height};
+  if (image.width)
+    return {*image.width, std::max(1, static_cast<int>(std::lround(*image.width / aspect)))};
+  if (image.height)
+    return {std::max(1, static_cast<int>(std::lround(*image.height * aspect))), *image.height};
+  return {scene.width, scene.height};
+}
+
+PixelSampling pixelSampling(const ImageOverrides& image, const PixelSampling& scene) {
+  PixelSampling sampling = chooseSampling(scene, image.samples, image.pattern);
+  if (image.filter) sampling.filter = *image.filter;
+  if (image.adaptiveThreshold) sampling.adaptiveThreshold = *image.adaptiveThreshold;
+  return sampling;
+}
+
+std::string availableAccelNames() {
+  std::string names;
+  for (Accel accel : availableAccels())
+    names += (names.empty() ? "" : ", ") + std::string(accelName(accel));
+  return names;
+}
+
+}  // namespace
+
+RenderSettings settingsFor(const Scene& scene, const RenderRequest& request) {
+  RenderSettings settings = request.settings;
+  if (!isAvailable(settings.accel))
+    throw SettingsError("--accel " + std::string(accelName(settings.accel)) +
+                        ": this build has no such structure (Embree was not found when it was "
+                        "built); available: " +
+                        availableAccelNames());
+  std::tie(settings.width, settings.height) = imageSize(request.image, scene.image);
+  settings.sampling = pixelSampling(request.image, scene.image.sampling);
+  if (std::string problem = samplingProblem(settings.sampling); !problem.empty())
+    throw SettingsError(problem);
+  settings.threads = resolveThreadCount(settings.threads);
+  return settings;
+}
+
+}  // namespace rise

@@ -1,0 +1,63 @@
+#include "render/renderer.hpp"
+
+#include <algorithm>
+
+namespace rise {
+
+std::string_view toString(Family family) {
+  switch (family) {
+    case Family::VisibleSurface:
+      return "visible surface";
+    case Family::RayTracing:
+      return "ray tracing";
+  }
+  return "?";
+}
+
+std::string_view toString(Option option) {
+  switch (option) {
+    case Option::Shading:
+      return "shading";
+    case Option::Culling:
+      return "no-cull";
+    case Option::Tessellation:
+      return "tessellation";
+    case Option::PlaneSize:
+      return "plane-size";
+    case Option::Accel:
+      return "accel";
+    case Option::MaxDepth:
+      return "max-depth";
+  }
+  return "?";
+}
+
+std::string_view toString(Effect effect) {
+  switch (effect) {
+    case Effect::Shadows:
+      return "shadows";
+    case Effect::Reflection:
+      return "reflection";
+    case Effect::Refraction:
+      return "refraction";
+    case Effect::DepthOfField:
+      return "depth of field";
+    case Effect::MotionBlur:
+      return "motion blur";
+    case Effect::SoftShadows:
+      return "soft shadows";
+    case Effect::Gloss:
+      return "gloss";
+  }
+  return "?";
+}
+
+bool AlgorithmDescription::writes(std::string_view buffer) const {
+  return std::find(buffers.begin(), buffers.end(), buffer) != buffers.end();
+}
+
+bool AlgorithmDescription::reads(Option option) const {
+  return std::find(options.begin(), options.end(), option) != options.end();
+}
+
+}  // namespace rise
