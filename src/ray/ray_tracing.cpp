@@ -58,7 +58,7 @@ namespace {
 ShadingFrame shadingFrame(const Ray& ray, const Hit& hit, const Material& material) {
   ShadingFrame frame;
   frame.surface = hit.shape->surfaceAt(ray, hit);
-  frame.surface.shadingNormal = material.shadingNormalAt(frame.surface);
+  frame.surface.shadingNormal = shadingNormal(material, frame.surface);
   frame.toViewer = -glm::normalize(ray.direction);
   frame.time = ray.time;
   frame.entering = glm::dot(frame.surface.normal, frame.toViewer) > 0.0f;
@@ -91,7 +91,7 @@ class Recursion {
 
   // Shade: the local Phong model, then the mirror and the refracted rays.
   Color shade(const ShadingFrame& frame, const Material& material, int depth) {
-    const SurfaceColors colors = material.colorsAt(frame.surface);
+    const SurfaceColors colors = surfaceColors(material, frame.surface);
     Color color = phongAmbient(material, colors, context_.scene.ambient) +
                   directLight(frame, material, colors, depth);
     if (depth >= context_.maxDepth) return color;
