@@ -17,8 +17,8 @@ import { pathToFileURL, fileURLToPath } from 'node:url';
 
 const LANGUAGES = { en: 'pt_BR', pt_BR: 'en' };
 const CHAPTER = 'algorithms/scanline.html';
-// A word each language's search must lead to CHAPTER's sibling by.
-const SEARCHES = { en: ['Catmull', 'algorithms/z-buffer.html'], pt_BR: ['Catmull', 'algorithms/z-buffer.html'] };
+// A word of each language that its search box must find a chapter by.
+const SEARCHES = { en: ['Catmull', 'algorithms/z-buffer.html'], pt_BR: ['arestas', 'algorithms/scanline.html'] };
 
 const output = path.resolve(process.argv[2] ?? 'build/manual');
 const results = { passed: 0, failures: [] };
@@ -56,7 +56,11 @@ async function readPage(page) {
       }),
     );
     return {
-      links: [...document.querySelectorAll('a[href]')].map((a) => a.href),
+      // Links, and the stylesheets, scripts and next/previous links of the head.
+      links: [
+        ...[...document.querySelectorAll('a[href], link[href]')].map((element) => element.href),
+        ...[...document.querySelectorAll('script[src]')].map((script) => script.src),
+      ],
       ids: [...document.querySelectorAll('[id]')].map((element) => element.id),
       images,
     };
@@ -84,7 +88,8 @@ async function crawl(page, language) {
       check(fs.existsSync(target), `${relative(file)}: the link ${link} leads to no file`);
       const fragment = decodeURIComponent(new URL(link).hash.slice(1));
       if (fragment) anchors.push([file, target, fragment]);
-      if (target.endsWith('.html') && target.startsWith(output) && fs.existsSync(target)) queue.push(target);
+      // The other language's pages are checked to exist, and crawled in their turn.
+      if (target.endsWith('.html') && target.startsWith(root + path.sep) && fs.existsSync(target)) queue.push(target);
     }
   }
   for (const [from, target, fragment] of anchors)
