@@ -1,6 +1,7 @@
 #include "ray/bvh.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <experimental/simd>
 #include <limits>
@@ -31,9 +32,9 @@ std::vector<BuildPrimitive> primitivesOf(const std::vector<const Shape*>& shapes
   for (std::size_t shape = 0; shape < shapes.size(); ++shape) {
     if (!bounded[shape]) continue;
     for (int primitive = 0; primitive < shapes[shape]->primitiveCount(); ++primitive) {
-      primitives.push_back(
-          {widened(shapes[shape]->primitiveBounds(primitive)),
-           {static_cast<std::uint32_t>(shape), static_cast<std::uint32_t>(primitive)}});
+      primitives.emplace_back(
+          widened(shapes[shape]->primitiveBounds(primitive)),
+          PrimitiveRef{static_cast<std::uint32_t>(shape), static_cast<std::uint32_t>(primitive)});
     }
   }
   return primitives;
@@ -113,9 +114,10 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Shape>>& shapes, int threads) {
   }
   const BuiltBvh built =
       buildBvh(primitivesOf(shapes_, bounded), threads > 0 ? threads : hardwareThreads());
-  nodes_ = collapseBvh(built.nodes);
+  nodes_ = collapseBvh(built.nodes());
   primitives_.reserve(built.primitives.size());
-  for (const PrimitiveRef& ref : built.primitives) {
+  for (const BuildPrimitive& primitive : built.primitives) {
+    const PrimitiveRef ref = primitive.ref();
     std::array<Vec3, 3> corners{};
     const bool isTriangle =
         shapes_[ref.shape]->primitiveTriangle(static_cast<int>(ref.primitive), corners);
@@ -173,6 +175,17 @@ void Bvh::traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCo
   counters.nodesVisited += boxesTested;
 }
 
+namespace {
+
+// The next float above t: std::nextafter(t, infinity), without a call into
+// the math library for the positive distances that hits have.
+float nextAbove(float t) {
+  if (t > 0.0f && t < kInfinity) return std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) + 1);
+  return std::nextafter(t, kInfinity);
+}
+
+}  // namespace
+
 // A ray through the edge that two triangles share meets both at the same t.
 // Brute force keeps the first it tests, the first in the scene's order; so
 // does the BVH, whatever order it tests them in, so that every structure
@@ -185,7 +198,7 @@ class NearestHit {
   template <typename Intersect>
   bool offer(PrimitiveRef ref, Intersect&& intersect) {
     Hit candidate = hit_;
-    candidate.t = std::nextafter(hit_.t, kInfinity);  // an equal t too
+    candidate.t = nextAbove(hit_.t);  // an equal t too
     if (!intersect(candidate)) return false;
     if (candidate.t == hit_.t && !(found_ && comesBefore(ref, ref_))) return false;
     hit_ = candidate;
