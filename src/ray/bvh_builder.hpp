@@ -52,6 +52,7 @@ struct BvhNode {
 // SIMD instructions load whole; the fourth float of each row holds the bits
 // of half of the reference.
 struct alignas(16) BuildPrimitive {
+  BuildPrimitive() = default;
   BuildPrimitive(const Bounds3& box, PrimitiveRef ref)
       : lower{box.min.x, box.min.y, box.min.z, std::bit_cast<float>(ref.shape)},
         upper{box.max.x, box.max.y, box.max.z, std::bit_cast<float>(ref.primitive)} {}

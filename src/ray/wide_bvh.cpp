@@ -25,8 +25,9 @@ void setChildBox(WideBvhNode& node, int child, const Bounds3& box) {
 class Collapser {
  public:
   explicit Collapser(std::span<const BvhNode> binary) : binary_(binary) {
-    // About one wide node for every two or three binary inner nodes.
-    wide_.reserve(binary.size() / 4 + 1);
+    // No more wide nodes than binary inner nodes: the vector never moves
+    // (pages reserved but not filled cost nothing).
+    wide_.reserve(binary.size() / 2 + 1);
   }
 
   std::vector<WideBvhNode> run() {
