@@ -8,38 +8,6 @@ namespace rise {
 
 namespace {
 
-// Whether the point a comes before the point b, x first, then y, then z.
-bool before(const Vec3& a, const Vec3& b) {
-  if (a.x != b.x) return a.x < b.x;
-  if (a.y != b.y) return a.y < b.y;
-  return a.z < b.z;
-}
-
-bool hasNan(const Vec3& v) { return std::isnan(v.x) || std::isnan(v.y) || std::isnan(v.z); }
-
-// For each vertex, an index shared by all the vertices at its point, found
-// by sorting the vertices by their points; a vertex with a coordinate that
-// is not a number, which no order can place, is a point of its own.
-std::vector<int> pointIndices(const std::vector<Vec3>& positions, int& pointCount) {
-  std::vector<int> pointOf(positions.size());
-  std::vector<int> sorted;
-  sorted.reserve(positions.size());
-  pointCount = 0;
-  for (std::size_t vertex = 0; vertex < positions.size(); ++vertex) {
-    if (hasNan(positions[vertex]))
-      pointOf[vertex] = pointCount++;
-    else
-      sorted.push_back(static_cast<int>(vertex));
-  }
-  std::sort(sorted.begin(), sorted.end(),
-            [&](int a, int b) { return before(positions[a], positions[b]); });
-  for (std::size_t i = 0; i < sorted.size(); ++i) {
-    if (i == 0 || before(positions[sorted[i - 1]], positions[sorted[i]])) ++pointCount;
-    pointOf[sorted[i]] = pointCount - 1;
-  }
-  return pointOf;
-}
-
 // The triangles around each point, in the mesh's order (a triangle with two
 // corners at one point is there twice), as one list cut into runs:
 // triangles[first[p] .. first[p + 1]) are point p's.
@@ -47,8 +15,9 @@ struct TrianglesAround {
   std::vector<int> first;
   std::vector<int> triangles;
 
-  TrianglesAround(const MeshGeometry& mesh, const std::vector<int>& pointOf, int pointCount)
-      : first(static_cast<std::size_t>(pointCount) + 1, 0), triangles(3 * mesh.triangles.size()) {
+  TrianglesAround(const MeshGeometry& mesh, const std::vector<std::uint32_t>& pointOf,
+                  std::size_t pointCount)
+      : first(pointCount + 1, 0), triangles(3 * mesh.triangles.size()) {
     for (const auto& corners : mesh.triangles)
       for (int vertex : corners) ++first[pointOf[vertex] + 1];
     std::partial_sum(first.begin(), first.end(), first.begin());
@@ -108,8 +77,9 @@ MeshGeometry withVertexNormals(const MeshGeometry& mesh, float creaseAngleDegree
     unitNormals.push_back(length > 0.0f ? cross / length : Vec3(0.0f));
   }
 
-  int pointCount = 0;
-  const std::vector<int> pointOf = pointIndices(mesh.positions, pointCount);
+  const std::vector<std::uint32_t> pointOf = weldedIndices(mesh.positions);
+  const std::size_t pointCount =
+      pointOf.empty() ? 0 : *std::max_element(pointOf.begin(), pointOf.end()) + 1;
   const TrianglesAround around(mesh, pointOf, pointCount);
 
   const float smoothCosine = std::cos(radians(creaseAngleDegrees));
@@ -120,7 +90,7 @@ MeshGeometry withVertexNormals(const MeshGeometry& mesh, float creaseAngleDegree
     std::array<int, 3> corners;
     for (int corner = 0; corner < 3; ++corner) {
       const int vertex = mesh.triangles[triangle][corner];
-      const int point = pointOf[vertex];
+      const std::uint32_t point = pointOf[vertex];
       Vec3 sum(0.0f);
       for (int i = around.first[point]; i < around.first[point + 1]; ++i) {
         const int neighbour = around.triangles[i];
