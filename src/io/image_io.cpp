@@ -139,9 +139,11 @@ std::vector<std::uint8_t> rgbBytes(const Image& image, Encoding encoding) {
   return bytes;
 }
 
-// zlib's fastest level with its own filter for every row: a rendered image
-// comes out a few percent larger than at the default level, six times faster.
+// zlib's fastest level, every row given as its difference from the row above
+// (PNG's "up" filter): a rendered image comes out within a few percent of the
+// size that trying every filter on every row gives, in a quarter of the time.
 constexpr int kPngCompressionLevel = 1;
+constexpr int kPngFilters = SPNG_FILTER_CHOICE_UP;
 
 void writePng(const Image& image, Encoding encoding, const std::filesystem::path& path,
               TemporaryFile& file) {
@@ -162,6 +164,7 @@ void writePng(const Image& image, Encoding encoding, const std::filesystem::path
   if (error == 0) error = spng_set_ihdr(png.get(), &header);
   if (error == 0)
     error = spng_set_option(png.get(), SPNG_IMG_COMPRESSION_LEVEL, kPngCompressionLevel);
+  if (error == 0) error = spng_set_option(png.get(), SPNG_FILTER_CHOICE, kPngFilters);
   if (error == 0)
     error = spng_encode_image(png.get(), bytes.data(), bytes.size(), SPNG_FMT_PNG,
                               SPNG_ENCODE_FINALIZE);
