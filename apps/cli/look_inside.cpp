@@ -36,12 +36,11 @@ std::optional<PixelRect> regionOf(const std::vector<int>& values, const RenderSe
   const PixelRect region{values[0], values[1], values[0] + values[2], values[1] + values[3]};
   const PixelRect image{0, 0, settings.width, settings.height};
   if (values[2] <= 0 || values[3] <= 0 || region.intersection(image).isEmpty())
-    throw SettingsError(
-        "--region " +
-        joined(std::vector<std::string>{std::to_string(values[0]), std::to_string(values[1]),
-                                        std::to_string(values[2]), std::to_string(values[3])}) +
-        ": expected a rectangle X,Y,W,H with W and H positive that overlaps the " +
-        std::to_string(settings.width) + "x" + std::to_string(settings.height) + " image");
+    throw SettingsError("--region " + std::to_string(values[0]) + "," + std::to_string(values[1]) +
+                        "," + std::to_string(values[2]) + "," + std::to_string(values[3]) +
+                        ": expected a rectangle X,Y,W,H with W and H positive that overlaps the " +
+                        std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                        " image");
   return region;
 }
 
