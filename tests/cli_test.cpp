@@ -252,6 +252,11 @@ TEST_F(RiseCommand, InspectRefusesAVisibleSurfaceAlgorithmAndAPixelOutside) {
       runRise("inspect " + example("classic.yaml") + " --width 64 --pixel 1,1 -a z-buffer");
   EXPECT_EQ(raster.status, 2);
   EXPECT_NE(raster.output.find("traces no rays"), std::string::npos) << raster.output;
+  const CommandResult notSvg =
+      runRise("inspect " + example("classic.yaml") + " --width 64 --pixel 1,1 --picture " +
+              file("tree.png").string());
+  EXPECT_EQ(notSvg.status, 2);
+  EXPECT_NE(notSvg.output.find("ending in .svg"), std::string::npos) << notSvg.output;
   const CommandResult outside =
       runRise("inspect " + example("classic.yaml") + " --width 64 --pixel 64,0");
   EXPECT_EQ(outside.status, 2);

@@ -80,6 +80,11 @@ int inspect(const InspectOptions& options) {
                  "explain` shows the steps of the others)\n";
     return kExitBadInput;
   }
+  if (!options.picture.empty() && options.picture.extension() != ".svg") {
+    std::cerr << "rise: --picture " << options.picture.string()
+              << ": expected a file name ending in .svg\n";
+    return kExitBadInput;
+  }
   std::variant<Job, int> prepared = prepare(options.settings);
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   Job& job = std::get<Job>(prepared);
