@@ -228,6 +228,22 @@ TEST_F(RiseCommand, ExplainWritesAPageOfTheStepsWithAFramePerStep) {
   EXPECT_FALSE(steps["steps"].empty());
 }
 
+TEST_F(RiseCommand, ExplainDrawsTheStepsShapesOnFramesWhenAsked) {
+  const CommandResult result =
+      runRise("explain " + example("classic.yaml") +
+              " -a area-subdivision --width 40 --shapes -o " + file("steps").string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  // Warnock's first window is the whole screen, outlined in the window's colour.
+  const Image frame = readImage(file("steps") / "frames/0001.png");
+  const Image withShapes = readImage(file("steps") / "shapes/0001.png");
+  const Color windowColour(1.0f, linearFromSrgb(204.0f / 255.0f), 0.0f);
+  for (const auto& [x, y] : {std::pair{0, 0}, std::pair{39, 29}, std::pair{20, 0}}) {
+    EXPECT_NEAR(withShapes.at(x, y).g, windowColour.g, 1e-3f) << x << "," << y;
+    EXPECT_NEAR(withShapes.at(x, y).b, 0.0f, 1e-3f) << x << "," << y;
+  }
+  EXPECT_EQ(withShapes.at(20, 15), frame.at(20, 15));  // inside, the frame as it was
+}
+
 TEST_F(RiseCommand, ExplainRefusesARegionOutsideTheImage) {
   const CommandResult result =
       runRise("explain " + example("classic.yaml") + " --width 40 --region 100,100,5,5 -o " +

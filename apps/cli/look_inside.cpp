@@ -20,6 +20,7 @@ struct ExplainOptions {
   std::filesystem::path directory;
   std::vector<int> region;  // x, y, width, height; empty: the whole image
   int every = 0;
+  bool framesWithShapes = false;
 };
 
 struct InspectOptions {
@@ -62,7 +63,8 @@ int explain(const ExplainOptions& options) {
   const std::filesystem::path directory =
       options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
   try {
-    writeStepPlayer(directory, {job.scene, renderer.description(), result, recorder});
+    writeStepPlayer(
+        directory, {job.scene, renderer.description(), result, recorder, options.framesWithShapes});
   } catch (const std::exception& error) {
     std::cerr << "rise: " << error.what() << "\n";
     return kExitOutputError;
@@ -148,6 +150,10 @@ std::function<std::optional<int>()> addLookInsideCommands(CLI::App& app) {
       ->add_option("--every", explainOptions->every,
                    "Show every Nth step (default: as many as keep about 200)")
       ->check(CLI::PositiveNumber);
+  explainCommand->add_flag(
+      "--shapes", explainOptions->framesWithShapes,
+      "Also write shapes/NNNN.png: each frame with the step's shapes (windows, "
+      "spans, edges) drawn on it, for slides and figures");
 
   auto inspectOptions = std::make_shared<InspectOptions>();
   CLI::App* inspectCommand = app.add_subcommand(
