@@ -9,13 +9,14 @@
 #include <variant>
 
 #include "algorithms/registry.hpp"
-#include "comparison_report.hpp"
 #include "io/image_io.hpp"
 #include "io/scene_error.hpp"
 #include "progress_bar.hpp"
 #include "render/buffer_images.hpp"
+#include "report/comparison_report.hpp"
 #include "settings_options.hpp"
 #include "stats_report.hpp"
+#include "studio_command.hpp"
 
 namespace rise::cli {
 namespace {
@@ -275,6 +276,9 @@ int run(int argc, char** argv) {
 
   const CLI::App* algorithmsCommand =
       app.add_subcommand("algorithms", "List the algorithms, each with its citation");
+  CLI::App* studioCommand = app.add_subcommand(
+      "studio", "Open RISE Studio, the interactive window: rise studio [SCENE] [--script FILE]");
+  studioCommand->prefix_command();
 
   try {
     app.parse(argc, argv);
@@ -284,6 +288,7 @@ int run(int argc, char** argv) {
   if (*renderCommand) return render(renderOptions, *renderCommand);
   if (*compareCommand) return compare(compareOptions);
   if (*validateCommand) return validate(validatePath);
+  if (*studioCommand) return startStudio(studioCommand->remaining());
   if (*algorithmsCommand) listAlgorithms();
   return 0;
 }
