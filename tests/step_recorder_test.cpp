@@ -161,17 +161,19 @@ TEST(StepRecorder, TheScanlinesSpansAndBuffersGiveItsFaceBuffer) {
     const StepTable& buffers = step.tables[3];
     ASSERT_EQ(spans.title, "spans");
     int x = 0;
-    for (const std::vector<double>& run : buffers.rows) {
-      ASSERT_EQ(run[0], x);
-      const int face = static_cast<int>(run[2]);
-      for (; x <= static_cast<int>(run[1]); ++x) {
+    const auto number = [](const StepCell& cell) { return std::get<double>(cell); };
+    for (const std::vector<StepCell>& run : buffers.rows) {
+      ASSERT_EQ(number(run[0]), x);
+      const int face = static_cast<int>(number(run[2]));
+      for (; x <= static_cast<int>(number(run[1])); ++x) {
         ASSERT_EQ(face, faceAt(result, x, y)) << x << "," << y;
         if (face < 0) continue;
         // The face seen has a span over the pixel's centre.
         const double centre = x + 0.5;
         EXPECT_TRUE(std::any_of(spans.rows.begin(), spans.rows.end(),
                                 [&](const auto& span) {
-                                  return span[1] == face && span[2] <= centre && centre < span[3];
+                                  return number(span[1]) == face && number(span[2]) <= centre &&
+                                         centre < number(span[3]);
                                 }))
             << x << "," << y;
       }
@@ -256,7 +258,7 @@ TEST(StepRecorder, TheBudgetKeepsEveryNthStepInTheRegionAndTheirPixels) {
   std::size_t writes = 0;
   for (const Step& step : kept) {
     skipped += step.skippedBefore;
-    writes += step.writes.size();
+    writes += step.writesBefore.size() + step.writes.size();
   }
   EXPECT_EQ(static_cast<std::size_t>(skipped) + kept.size(), all.size());
   EXPECT_LT(kept.size(), all.size() / 2);

@@ -19,7 +19,7 @@
 #include "file_browser.hpp"
 #include "image_view.hpp"
 #include "render_job.hpp"
-#include "report/comparison_report.hpp"
+#include "reports/comparison_report.hpp"
 #include "session.hpp"
 #include "texture.hpp"
 #include "viewport.hpp"

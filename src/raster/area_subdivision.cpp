@@ -282,7 +282,7 @@ class Subdivision {
       ++counts[relations[i]];
       if (relations[i] != kDisjoint)
         classified.rows.push_back(
-            {static_cast<double>(window.candidates[i]), static_cast<double>(relations[i])});
+            {static_cast<double>(window.candidates[i]), kRelationNames[relations[i]]});
     }
     step.text = "window " + std::to_string(area.x0) + "," + std::to_string(area.y0) + " " +
                 std::to_string(area.width()) + "x" + std::to_string(area.height()) + ": " +
@@ -290,7 +290,7 @@ class Subdivision {
                 std::to_string(counts[kIntersecting]) + " intersecting, " +
                 std::to_string(counts[kContained]) + " contained, " +
                 std::to_string(counts[kDisjoint]) + " disjoint; " + describe(verdict);
-    step.values = {{"level", window.level}, {"verdict", static_cast<double>(verdict)}};
+    step.values = {{"level", window.level}};
     step.tables.push_back(std::move(classified));
     step.shapes.push_back({StepShape::Kind::Rectangle,
                            "window",

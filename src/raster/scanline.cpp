@@ -210,6 +210,9 @@ class BandSweep {
     step.tables.back().title = "edges entering from the edge table";
     step.tables.push_back(edgeRows(activeEdges_));
     step.tables.back().title = "active edge list";
+    for (const ActiveEdge& edge : activeEdges_)
+      step.shapes.push_back(
+          {StepShape::Kind::Point, "edge", {{edge.x, static_cast<float>(y) + 0.5f}}});
     StepTable spans{"spans", {"polygon", "face", "left", "right"}, {}};
     const float centre = static_cast<float>(y) + 0.5f;
     forEachSpan([&](int order, float left, float right) {

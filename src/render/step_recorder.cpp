@@ -108,8 +108,8 @@ std::vector<Step> StepRecorder::keptSteps() const {
       ++skipped;
       continue;
     }
-    step.writes.insert(step.writes.begin(), left.writes.begin(), left.writes.end());
-    step.settled.insert(step.settled.begin(), left.settled.begin(), left.settled.end());
+    step.writesBefore = std::move(left.writes);
+    step.settledBefore = std::move(left.settled);
     step.skippedBefore = skipped;
     kept.push_back(std::move(step));
     left = {};

@@ -17,6 +17,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "core/image.hpp"
@@ -50,10 +51,12 @@ struct StepShape {
 };
 
 // A small table: the active edge list, the polygons a window classified.
+// A cell holds a number or a word.
+using StepCell = std::variant<double, std::string>;
 struct StepTable {
   std::string title;
   std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
+  std::vector<std::vector<StepCell>> rows;
 };
 
 struct Step {
@@ -66,6 +69,10 @@ struct Step {
   // Pixels that are final after this step: their colour is the render's.
   std::vector<PixelRect> settled;
   int skippedBefore = 0;  // steps left out by the budget since the last kept one
+  // What the steps left out before this one changed, for rebuilding the
+  // image as it stood: applied before this step's own.
+  std::vector<PixelWrite> writesBefore;
+  std::vector<PixelRect> settledBefore;
 };
 
 // What a recorder keeps: the steps that touch `region` (all, when it is
@@ -105,7 +112,7 @@ class StepRecorder {
   void recordTree(RayTree tree);
 
   // Every step, its parts joined, in order; what the budget keeps of them,
-  // each kept step holding the writes and settled pixels of the steps left
+  // each kept step carrying the writes and settled pixels of the steps left
   // out before it; and the ray trees in the order of their samples.
   std::vector<Step> allSteps() const;
   std::vector<Step> keptSteps() const;

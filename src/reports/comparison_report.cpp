@@ -1,4 +1,4 @@
-#include "report/comparison_report.hpp"
+#include "reports/comparison_report.hpp"
 
 #include <algorithm>
 #include <cerrno>
