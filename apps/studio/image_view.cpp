@@ -5,8 +5,8 @@
 
 namespace rise::studio {
 
-std::optional<glm::ivec2> drawImageView(const char* id, const Texture& texture,
-                                        ImageViewState& state, ImVec2 size) {
+ImageViewShown drawImageView(const char* id, const Texture& texture, ImageViewState& state,
+                             ImVec2 size) {
   size.x = std::max(size.x, 16.0f);
   size.y = std::max(size.y, 16.0f);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -14,7 +14,7 @@ std::optional<glm::ivec2> drawImageView(const char* id, const Texture& texture,
   const bool hovered = ImGui::IsItemHovered();
   ImDrawList& draw = *ImGui::GetWindowDrawList();
   draw.AddRectFilled(origin, {origin.x + size.x, origin.y + size.y}, IM_COL32(30, 30, 34, 255));
-  if (texture.empty()) return std::nullopt;
+  if (texture.empty()) return {};
 
   const float width = static_cast<float>(texture.width());
   const float height = static_cast<float>(texture.height());
@@ -45,12 +45,15 @@ std::optional<glm::ivec2> drawImageView(const char* id, const Texture& texture,
   draw.PushClipRect(origin, {origin.x + size.x, origin.y + size.y}, true);
   draw.AddImage(texture.handle(), screenOf(0, 0, zoom), screenOf(1, 1, zoom));
   draw.PopClipRect();
-  if (!hovered) return std::nullopt;
-  const ImVec2 topLeft = screenOf(0, 0, zoom);
-  const int x = static_cast<int>(std::floor((io.MousePos.x - topLeft.x) / zoom));
-  const int y = static_cast<int>(std::floor((io.MousePos.y - topLeft.y) / zoom));
-  if (x < 0 || y < 0 || x >= texture.width() || y >= texture.height()) return std::nullopt;
-  return glm::ivec2(x, y);
+  ImageViewShown shown{screenOf(0, 0, zoom), zoom, std::nullopt, false};
+  if (!hovered) return shown;
+  const int x = static_cast<int>(std::floor((io.MousePos.x - shown.topLeft.x) / zoom));
+  const int y = static_cast<int>(std::floor((io.MousePos.y - shown.topLeft.y) / zoom));
+  if (x < 0 || y < 0 || x >= texture.width() || y >= texture.height()) return shown;
+  shown.hovered = glm::ivec2(x, y);
+  shown.clicked = ImGui::IsMouseReleased(ImGuiMouseButton_Left) &&
+                  io.MouseDragMaxDistanceSqr[ImGuiMouseButton_Left] < 9.0f;
+  return shown;
 }
 
 }  // namespace rise::studio

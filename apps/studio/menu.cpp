@@ -63,6 +63,10 @@ void Studio::drawMenuBar() {
             FileBrowser::Purpose::Save, "Save the " + render_.buffer + " buffer",
             here.parent_path() / ("render." + render_.buffer + ".png"),
             [this, buffer = render_.buffer](const auto& path) { saveBuffer(buffer, path); });
+      if (ImGui::MenuItem("Save ray tree...", nullptr, false, !inspection_.trees.empty()))
+        browser_.show(FileBrowser::Purpose::Save, "Save the pixel's ray trees as text",
+                      here.parent_path() / "ray-tree.txt",
+                      [this](const auto& path) { saveRayTree(path); });
       if (ImGui::MenuItem("Write comparison page...", nullptr, false, !comparison_.renders.empty()))
         browser_.show(FileBrowser::Purpose::Folder, "Write the comparison into a folder",
                       here.parent_path(), [this](const auto& path) { writeComparisonPage(path); });

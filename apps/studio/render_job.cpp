@@ -16,11 +16,12 @@ PixelRect around(const PixelRect& a, const PixelRect& b) {
 }  // namespace
 
 RenderJob::RenderJob(const Renderer& renderer, std::shared_ptr<const Scene> scene,
-                     const RenderSettings& settings)
+                     const RenderSettings& settings, std::optional<StepBudget> steps)
     : renderer_(renderer),
       scene_(std::move(scene)),
       settings_(settings),
       start_(std::chrono::steady_clock::now()) {
+  if (steps) recorder_.emplace(*steps);
   thread_ = std::thread([this] { run(); });
 }
 

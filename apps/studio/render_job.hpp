@@ -8,18 +8,22 @@
 #include <chrono>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "render/renderer.hpp"
+#include "render/step_recorder.hpp"
 
 namespace rise::studio {
 
 class RenderJob final : public RenderObserver {
  public:
+  // With `steps`, the render records the algorithm's steps (and the ray
+  // trees of the budget's pixel) as the budget says.
   RenderJob(const Renderer& renderer, std::shared_ptr<const Scene> scene,
-            const RenderSettings& settings);
+            const RenderSettings& settings, std::optional<StepBudget> steps = std::nullopt);
   // Cancels the render and waits for its thread.
   ~RenderJob() override;
   RenderJob(const RenderJob&) = delete;
@@ -49,6 +53,9 @@ class RenderJob final : public RenderObserver {
   void onProgress(double fractionDone) override { fraction_ = fractionDone; }
   bool cancelled() const override { return cancelled_; }
   void onPixelsDone(const PixelRect& region, const Image& image) override;
+  StepRecorder* stepRecorder() override { return recorder_ ? &*recorder_ : nullptr; }
+  // The steps recorded, once finished; null when none were asked for.
+  const StepRecorder* recorder() const { return recorder_ ? &*recorder_ : nullptr; }
 
  private:
   void run();
@@ -68,6 +75,7 @@ class RenderJob final : public RenderObserver {
   Image finishedPixels_;
   std::vector<PixelRect> finishedRegions_;  // since the last takeFinishedPixels
 
+  std::optional<StepRecorder> recorder_;
   RenderResult result_;
   std::string failure_;
   std::thread thread_;

@@ -50,7 +50,7 @@ const auto kFilterName = [](FilterKind filter) { return toString(filter); };
 
 void Studio::drawRenderPanel() {
   ImGui::SetNextWindowPos({960, 20}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({640, 600}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize({640, 560}, ImGuiCond_FirstUseEver);
   ImGui::Begin("Render");
   const Renderer& renderer = *findRenderer(algorithm_);
   ImGui::SetNextItemWidth(220);
@@ -83,6 +83,12 @@ void Studio::drawRenderPanel() {
   std::snprintf(label, sizeof label, "%.0f%%   %.2f s", fraction * 100.0, seconds);
   ImGui::ProgressBar(static_cast<float>(fraction), {-1, 0}, label);
   track("progress");
+  ImGui::Checkbox("Record the steps", &recordSteps_);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("The next render records what the algorithm does, for the step player");
+  track("Record the steps");
+  ImGui::SameLine();
+  ImGui::TextDisabled("Click a pixel of a ray-traced image to see its rays.");
   if (ImGui::CollapsingHeader("Settings")) drawRenderSettings(renderer.description());
   drawRenderImage();
   ImGui::End();
@@ -164,19 +170,22 @@ void Studio::drawRenderImage() {
   ImVec2 size = ImGui::GetContentRegionAvail();
   size.y -= readout;
   const bool showBuffer = !render_.buffer.empty() && !render_.job && render_.result;
-  render_.hovered = drawImageView(
+  render_.shownAt = drawImageView(
       "render image", showBuffer ? render_.bufferTexture : render_.texture, render_.view, size);
   track("render image");
   drawPixelValues();
 }
 
 void Studio::drawPixelValues() {
-  if (!render_.hovered || !render_.result || render_.job) {
+  if (render_.shownAt.clicked && render_.result && !render_.job &&
+      findRenderer(render_.algorithm)->description().family == Family::RayTracing)
+    inspectPixel(*render_.shownAt.hovered);
+  if (!render_.shownAt.hovered || !render_.result || render_.job) {
     ImGui::TextDisabled(
         "Point at a pixel to read its values; wheel: zoom, drag: pan, double-click: fit.");
     return;
   }
-  const int x = render_.hovered->x, y = render_.hovered->y;
+  const int x = render_.shownAt.hovered->x, y = render_.shownAt.hovered->y;
   const RenderResult& result = *render_.result;
   if (x >= result.image.width() || y >= result.image.height()) return;
   const Color& colour = result.image.at(x, y);

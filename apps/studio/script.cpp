@@ -124,7 +124,11 @@ bool Script::clickOn(const Command& command, Studio& studio, int clicks) {
     fail(command, "no widget '" + name + "' is shown");
     return true;
   }
-  const ImVec2 centre{widget->x + (widget->z - widget->x) * across, (widget->y + widget->w) * 0.5f};
+  return clickAt({widget->x + (widget->z - widget->x) * across, (widget->y + widget->w) * 0.5f},
+                 clicks);
+}
+
+bool Script::clickAt(const ImVec2& centre, int clicks) {
   const auto at = [&](bool pressed) {
     InputFrame frame;
     frame.pointer = centre;
@@ -172,6 +176,27 @@ bool Script::run(const Command& command, Studio& studio, const Image& screenshot
     const std::string from = command.rest.substr(0, bar);
     if (!studio.replaceInText(from, command.rest.substr(bar + 1)))
       fail(command, "the text pane has no '" + from + "'");
+  } else if (name == "record-steps" && needWords(1)) {
+    studio.setRecordingSteps(command.words[0] == "on");
+  } else if (name == "click-pixel" && needWords(2)) {
+    const ImageViewShown& shown = studio.renderView().shownAt;
+    const Vec2 pixel(std::atof(command.words[0].c_str()) + 0.5f,
+                     std::atof(command.words[1].c_str()) + 0.5f);
+    return clickAt(shown.onScreen(pixel), 1);
+  } else if (name == "save-tree" && needWords(1)) {
+    if (studio.inspection().trees.empty())
+      fail(command, "no pixel's rays are shown");
+    else if (!studio.saveRayTree(command.rest))
+      fail(command, studio.status());
+  } else if (name == "step" && needWords(1)) {
+    const int count = static_cast<int>(studio.player().steps.size());
+    if (count == 0) fail(command, "no steps were recorded");
+    studio.showStep(command.words[0] == "last" ? count - 1 : std::atoi(command.words[0].c_str()));
+  } else if (name == "save-step-image" && needWords(1)) {
+    if (!studio.player().replay)
+      fail(command, "no steps were recorded");
+    else
+      writeImage(studio.player().replay->image(), command.rest);
   } else if (name == "algorithm" && needWords(1)) {
     if (!studio.chooseAlgorithm(command.words[0])) fail(command, studio.status());
   } else if (name == "setting" && needWords(2)) {

@@ -13,6 +13,11 @@
 //   key enter|escape|tab       press and release a key
 //   replace-text OLD|NEW       change the text pane's text (then click Apply)
 //   algorithm NAME             choose the render panel's algorithm
+//   record-steps on|off        the render panel's "Record the steps"
+//   click-pixel X Y            click pixel (X, Y) of the render panel's image
+//   save-tree FILE             the pixel clicked's ray trees, as rise inspect prints them
+//   step N|last                show step N (from 0) in the step player
+//   save-step-image FILE       the step player's image after its step
 //   setting NAME VALUE         a render setting: width, height, samples, threads
 //   wait                       until every render has finished
 //   frames N                   let N frames pass
@@ -76,6 +81,7 @@ class Script {
   // Runs `command`; false while it is waiting for the studio.
   bool run(const Command& command, Studio& studio, const Image& screenshot);
   bool clickOn(const Command& command, Studio& studio, int clicks);
+  bool clickAt(const ImVec2& point, int clicks);
   void fail(const Command& command, const std::string& why);
 
   std::filesystem::path path_;

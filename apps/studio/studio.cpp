@@ -27,6 +27,8 @@ bool Studio::frame(bool closeRequested) {
   drawRenderPanel();
   drawComparePanel();
   drawHelpPanel();
+  drawStepsPanel();
+  drawRayTreePanel();
   browser_.draw(recent_);
   drawUnsavedQuestion();
   drawStatusBar();
@@ -176,7 +178,9 @@ void Studio::startRender() {
     render_.shown = Image(settings->width, settings->height);
     render_.texture.upload(render_.shown);
   }
-  render_.job = std::make_unique<RenderJob>(*findRenderer(algorithm_), session_.scene(), *settings);
+  render_.job = std::make_unique<RenderJob>(
+      *findRenderer(algorithm_), session_.scene(), *settings,
+      recordSteps_ ? std::optional<StepBudget>(StepBudget{}) : std::nullopt);
   renderedRevision_ = session_.revision();
 }
 
@@ -197,6 +201,7 @@ void Studio::updateRenders() {
         render_.shown = render_.result->image;
         render_.texture.upload(render_.shown);
         render_.buffer.clear();
+        if (render_.job->recorder()) startPlayer(*render_.job);
         note(render_.algorithm + ": rendered in " + std::to_string(render_.job->seconds()) + " s");
       } else {
         note(render_.job->renderer().name().data() + std::string(": ") + render_.job->failure());
@@ -212,6 +217,7 @@ void Studio::updateRenders() {
     return true;
   });
   if (comparison_.job && comparison_.job->finished()) finishComparisonStep();
+  if (inspection_.job && inspection_.job->finished()) finishInspection();
 }
 
 bool Studio::saveImage(const std::filesystem::path& path) {

@@ -18,8 +18,10 @@
 #include "algorithms/settings_for_scene.hpp"
 #include "file_browser.hpp"
 #include "image_view.hpp"
+#include "render/step_recorder.hpp"
 #include "render_job.hpp"
 #include "reports/comparison_report.hpp"
+#include "reports/step_replay.hpp"
 #include "session.hpp"
 #include "texture.hpp"
 #include "viewport.hpp"
@@ -36,7 +38,36 @@ struct RenderView {
   std::string buffer;  // "" for the image, else the buffer shown
   Texture bufferTexture;
   ImageViewState view;
-  std::optional<glm::ivec2> hovered;
+  ImageViewShown shownAt;  // where the view put the image last frame
+};
+
+// The step player: the steps an algorithm recorded, the image as it stood
+// after the current one, its overlays.
+struct StepPlayer {
+  std::string algorithm;
+  std::vector<Step> steps;
+  std::uint64_t notDetailed = 0;
+  Image finalImage;  // the render's, for the pixels steps say are settled
+  Color background{0.0f};
+  int current = -1;                    // -1: before the first step
+  std::unique_ptr<StepReplay> replay;  // the image after the current step
+  bool showDepth = false;              // the depth buffer instead of the image
+  Texture texture;
+  ImageViewState view;
+  bool playing = false;
+  float stepsPerSecond = 10.0f;
+  double due = 0.0;  // steps owed to the playing clock
+};
+
+// The ray trees of the pixel last clicked in a ray-traced image.
+struct PixelInspection {
+  std::unique_ptr<RenderJob> job;
+  glm::ivec2 pixel{0};
+  std::string algorithm;
+  std::shared_ptr<const Scene> scene;  // the scene it was traced in
+  Color pixelColor{0.0f};              // the render's colour there
+  std::vector<RayTree> trees;
+  int sample = 0;
 };
 
 // The compare panel: the algorithms chosen, rendered one after the other.
@@ -73,11 +104,22 @@ class Studio {
   void startRender();
   void cancelRender();
   void startComparison(const std::vector<std::string>& algorithms);
+  // Traces the pixel again with the render panel's ray tracer, recording the
+  // tree of rays of each of its samples.
+  void inspectPixel(const glm::ivec2& pixel);
+  void setRecordingSteps(bool on) { recordSteps_ = on; }
+  void showStep(int step);
   bool saveImage(const std::filesystem::path& path);
+  // The ray trees of the pixel clicked, as `rise inspect` prints them.
+  bool saveRayTree(const std::filesystem::path& path);
   bool saveBuffer(const std::string& buffer, const std::filesystem::path& path);
   bool writeComparisonPage(const std::filesystem::path& directory);
 
-  bool rendering() const { return render_.job != nullptr || comparison_.job != nullptr; }
+  bool rendering() const {
+    return render_.job != nullptr || comparison_.job != nullptr || inspection_.job != nullptr;
+  }
+  const StepPlayer& player() const { return player_; }
+  const PixelInspection& inspection() const { return inspection_; }
   // Seconds from the last cancel until its render's thread had stopped.
   std::optional<double> lastCancelSeconds() const { return lastCancelSeconds_; }
   const Session& session() const { return session_; }
@@ -110,6 +152,12 @@ class Studio {
   void drawCompareTable();
   void drawDifference();
   void drawHelpPanel();
+  void drawStepsPanel();
+  void drawStepOverlay(const Step& step, const ImageViewShown& shown);
+  void drawRayTreePanel();
+  void drawRayNode(const RayTree& tree, int ray);
+  void startPlayer(const RenderJob& job);
+  void finishInspection();
   void drawUnsavedQuestion();
   void drawStatusBar();
 
@@ -145,6 +193,9 @@ class Studio {
   std::optional<double> lastCancelSeconds_;
 
   Comparison comparison_;
+  bool recordSteps_ = false;
+  StepPlayer player_;
+  PixelInspection inspection_;
   Viewport viewport_;
   bool showHelp_ = false;
   std::string status_;

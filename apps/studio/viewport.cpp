@@ -139,6 +139,7 @@ Viewport::~Viewport() {
   glDeleteVertexArrays(1, &vertexArray_);
   glDeleteBuffers(1, &triangles_);
   glDeleteBuffers(1, &lines_);
+  glDeleteBuffers(1, &extraLines_);
   glDeleteFramebuffers(1, &framebuffer_);
   glDeleteTextures(1, &colour_);
   glDeleteRenderbuffers(1, &depth_);
@@ -157,6 +158,7 @@ void Viewport::prepare() {
   glGenVertexArrays(1, &vertexArray_);
   glGenBuffers(1, &triangles_);
   glGenBuffers(1, &lines_);
+  glGenBuffers(1, &extraLines_);
   glGenFramebuffers(1, &framebuffer_);
   glGenTextures(1, &colour_);
   glGenRenderbuffers(1, &depth_);
@@ -292,12 +294,22 @@ void Viewport::renderScene(const Scene& scene, int selected, int width, int heig
     glDrawArrays(GL_TRIANGLES, first, count);
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
+  bindVertexLayout(extraLines_);
+  glDrawArrays(GL_LINES, 0, extraLineVertices_);
   bindVertexLayout(lines_);
   glDisable(GL_DEPTH_TEST);
   glDrawArrays(GL_LINES, 0, lineVertices_);
   glBindVertexArray(0);
   glUseProgram(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Viewport::showLines(const std::vector<SceneLine>& lines) {
+  prepare();
+  std::vector<Vertex> vertices;
+  for (const SceneLine& line : lines) addLine(vertices, line.from, line.to, line.colour);
+  extraLineVertices_ = static_cast<int>(vertices.size());
+  upload(extraLines_, vertices);
 }
 
 std::optional<CameraPlacement> Viewport::draw(const Scene& scene, int revision, int selected,

@@ -16,6 +16,12 @@
 
 namespace rise::studio {
 
+// A line drawn in the scene: a ray of a pixel's tree.
+struct SceneLine {
+  Vec3 from, to;
+  Vec3 colour;
+};
+
 // Where the user placed the camera, to be written back to the scene.
 struct CameraPlacement {
   Vec3 position;
@@ -33,6 +39,8 @@ class Viewport {
   // object `selected` (an index into its shapes, or -1) outlined. Returns the
   // camera's placement once the user has moved it and let go.
   std::optional<CameraPlacement> draw(const Scene& scene, int revision, int selected, ImVec2 size);
+  // Lines drawn over the scene until others are given.
+  void showLines(const std::vector<SceneLine>& lines);
 
  private:
   struct Orbit {
@@ -47,7 +55,8 @@ class Viewport {
   void renderScene(const Scene& scene, int selected, int width, int height);
 
   unsigned program_ = 0;
-  unsigned vertexArray_ = 0, triangles_ = 0, lines_ = 0;
+  unsigned vertexArray_ = 0, triangles_ = 0, lines_ = 0, extraLines_ = 0;
+  int extraLineVertices_ = 0;
   unsigned framebuffer_ = 0, colour_ = 0, depth_ = 0;
   int targetWidth_ = 0, targetHeight_ = 0;
   int triangleVertices_ = 0, lineVertices_ = 0;

@@ -16,6 +16,7 @@ namespace rise {
 namespace {
 
 const std::string kSourceDir = RISE_SOURCE_DIR;
+
 const std::string kClassic = kSourceDir + "/examples/classic.yaml";
 
 class Studio : public TemporaryFolderTest {
@@ -43,9 +44,17 @@ class Studio : public TemporaryFolderTest {
   std::map<std::string, std::array<float, 4>> layout() const {
     std::map<std::string, std::array<float, 4>> widgets;
     std::ifstream file(directory_ / "layout.txt");
-    std::string name;
-    std::array<float, 4> box{};
-    while (file >> name >> box[0] >> box[1] >> box[2] >> box[3]) widgets[name] = box;
+    // A line is the widget's name, which may hold spaces, then its four numbers.
+    for (std::string line; std::getline(file, line);) {
+      std::array<float, 4> box{};
+      std::size_t end = line.size();
+      for (int i = 3; i >= 0; --i) {
+        const std::size_t space = line.rfind(' ', end - 1);
+        box[static_cast<std::size_t>(i)] = std::stof(line.substr(space + 1, end - space - 1));
+        end = space;
+      }
+      widgets[line.substr(0, end)] = box;
+    }
     return widgets;
   }
 };
@@ -110,6 +119,20 @@ click tree/objects/1
 click Render
 wait
 save-image ${OUT}/ray-tracing.png
+# The glass sphere's pixel: its tree of rays.
+click-pixel 320 230
+wait
+save-tree ${OUT}/tree.txt
+# The scanline algorithm's steps, replayed to the last.
+algorithm scanline
+record-steps on
+click Render
+wait
+step 12
+save-step-image ${OUT}/steps-12.png
+step last
+save-step-image ${OUT}/steps-last.png
+record-steps off
 algorithm z-buffer
 click Render
 wait
@@ -133,6 +156,29 @@ screenshot ${OUT}/screenshot.png
   std::string expected = fileText(kClassic);
   expected.replace(expected.find("[1, 1, 1], ka: 0.0, kd: 0.0"), 9, "[0.3, 0.6, 1]");
   EXPECT_EQ(fileText(directory_ / "edited.yaml"), expected);
+
+  // The glass sphere's pixel (the one under the pointer, which lands on whole
+  // screen pixels): its tree, through the glass, is rise inspect's.
+  const std::string treeSaved = fileText(directory_ / "tree.txt");
+  int x = 0, y = 0;
+  ASSERT_EQ(std::sscanf(treeSaved.c_str(), "pixel %d,%d:", &x, &y), 2) << treeSaved;
+  EXPECT_NEAR(x, 320, 1);
+  EXPECT_NEAR(y, 230, 1);
+  EXPECT_NE(treeSaved.find("refraction ray"), std::string::npos) << treeSaved;
+  ASSERT_EQ(runCli("inspect '" + (directory_ / "edited.yaml").string() + "' --pixel " +
+                   std::to_string(x) + "," + std::to_string(y) + " > '" +
+                   (directory_ / "inspect.txt").string() + "'"),
+            0);
+  EXPECT_EQ(treeSaved, fileText(directory_ / "inspect.txt"));
+
+  // Step 12 of the scanline algorithm shows part of the image; after the last
+  // step the player shows the render's image.
+  EXPECT_NE(fileText(directory_ / "steps-12.png"), fileText(directory_ / "steps-last.png"));
+  // The step player, after the scanline algorithm's last step, shows its image.
+  ASSERT_EQ(runCli("render '" + (directory_ / "edited.yaml").string() + "' -a scanline -o '" +
+                   (directory_ / "cli-scanline.png").string() + "'"),
+            0);
+  EXPECT_EQ(fileText(directory_ / "steps-last.png"), fileText(directory_ / "cli-scanline.png"));
 
   // The images are the command line's for the same scene, to the byte.
   for (const std::string algorithm : {"ray-tracing", "z-buffer"}) {
