@@ -128,8 +128,11 @@ algorithm scanline
 record-steps on
 click Render
 wait
-step 12
-save-step-image ${OUT}/steps-12.png
+step 80
+save-step-image ${OUT}/steps-80.png
+click step forward
+frames 2
+save-step-image ${OUT}/steps-81.png
 step last
 save-step-image ${OUT}/steps-last.png
 record-steps off
@@ -171,9 +174,10 @@ screenshot ${OUT}/screenshot.png
             0);
   EXPECT_EQ(treeSaved, fileText(directory_ / "inspect.txt"));
 
-  // Step 12 of the scanline algorithm shows part of the image; after the last
-  // step the player shows the render's image.
-  EXPECT_NE(fileText(directory_ / "steps-12.png"), fileText(directory_ / "steps-last.png"));
+  // Step 80 of the scanline algorithm, halfway down, shows part of the image;
+  // the player's > button goes one step on, which draws more of it.
+  EXPECT_TRUE(fileText(directory_ / "steps-80.png") != fileText(directory_ / "steps-last.png"));
+  EXPECT_TRUE(fileText(directory_ / "steps-81.png") != fileText(directory_ / "steps-80.png"));
   // The step player, after the scanline algorithm's last step, shows its image.
   ASSERT_EQ(runCli("render '" + (directory_ / "edited.yaml").string() + "' -a scanline -o '" +
                    (directory_ / "cli-scanline.png").string() + "'"),
