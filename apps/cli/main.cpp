@@ -9,7 +9,6 @@
 #include <variant>
 
 #include "algorithms/registry.hpp"
-#include "comparison_report.hpp"
 #include "io/image_io.hpp"
 #include "io/scene_error.hpp"
 #include "job.hpp"
@@ -17,8 +16,10 @@
 #include "manual_command.hpp"
 #include "progress_bar.hpp"
 #include "render/buffer_images.hpp"
+#include "reports/comparison_report.hpp"
 #include "settings_options.hpp"
 #include "stats_report.hpp"
+#include "studio_command.hpp"
 
 namespace rise::cli {
 namespace {
@@ -216,6 +217,9 @@ int run(int argc, char** argv) {
 
   const CLI::App* algorithmsCommand =
       app.add_subcommand("algorithms", "List the algorithms, each with its citation");
+  CLI::App* studioCommand = app.add_subcommand(
+      "studio", "Open RISE Studio, the interactive window: rise studio [SCENE] [--script FILE]");
+  studioCommand->prefix_command();
   const auto runLookInside = addLookInsideCommands(app);
   const auto runManual = addManualCommand(app);
 
@@ -227,6 +231,7 @@ int run(int argc, char** argv) {
   if (*renderCommand) return render(renderOptions, *renderCommand);
   if (*compareCommand) return compare(compareOptions);
   if (*validateCommand) return validate(validatePath);
+  if (*studioCommand) return startStudio(studioCommand->remaining());
   if (const std::optional<int> status = runLookInside()) return *status;
   if (const std::optional<int> status = runManual()) return *status;
   if (*algorithmsCommand) listAlgorithms();

@@ -11,15 +11,21 @@
 #include <mutex>
 #include <vector>
 
+#include "core/image.hpp"
+
 namespace rise {
 
 // Watches long work from outside: progress for a bar, cancellation for an
-// interactive front end. Called from the worker threads, one call at a time.
+// interactive front end. Called from the worker threads, one call at a time,
+// but for onRegionDone.
 class Progress {
  public:
   virtual ~Progress() = default;
   virtual void onProgress(double /*fractionDone*/) {}
   virtual bool cancelled() const { return false; }
+  // The part `region` of the image the work makes is finished (a tile, a
+  // band): called by the task that finished it, while other tasks may run.
+  virtual void onRegionDone(const PixelRect& /*region*/) {}
 };
 
 // The number of threads to use: `requested`, or one per hardware thread when
@@ -35,6 +41,8 @@ class Workers {
 
   int threads() const { return threads_; }
   bool cancelled() const { return progress_->cancelled(); }
+  // Called by a task that has finished the pixels of `region`.
+  void regionDone(const PixelRect& region) const { progress_->onRegionDone(region); }
 
   // Calls work(task) once for every task of [0, taskCount), each thread
   // taking the next task not yet taken; reports the share of tasks done

@@ -30,6 +30,12 @@ enum class SamplePattern { None, Regular, Jittered, Random, Adaptive };
 // trading a little sharpness for smoother edges.
 enum class FilterKind { Box, Tent, Gaussian };
 
+inline constexpr SamplePattern kAllPatterns[] = {SamplePattern::None, SamplePattern::Regular,
+                                                 SamplePattern::Jittered, SamplePattern::Random,
+                                                 SamplePattern::Adaptive};
+inline constexpr FilterKind kAllFilters[] = {FilterKind::Box, FilterKind::Tent,
+                                             FilterKind::Gaussian};
+
 std::string_view toString(SamplePattern pattern);
 std::string_view toString(FilterKind filter);
 

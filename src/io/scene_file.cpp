@@ -243,23 +243,6 @@ Scene readScene(const YAML::Node& root, std::string source) {
   return scene;
 }
 
-// yaml-cpp's wording for the syntax errors people make most, said plainly.
-std::string explainSyntaxError(const YAML::ParserException& error, std::string_view text) {
-  if (error.msg == YAML::ErrorMsg::END_OF_SEQ_FLOW)
-    return "a list opened with '[' is not closed with ']'";
-  if (error.msg == YAML::ErrorMsg::END_OF_MAP_FLOW)
-    return "a map opened with '{' is not closed with '}'";
-  if (error.msg == YAML::ErrorMsg::FLOW_END && error.mark.pos >= 0 &&
-      static_cast<std::size_t>(error.mark.pos) < text.size())
-    return std::string("unexpected '") + text[error.mark.pos] +
-           "'; check that the brackets before it are closed in order";
-  if (error.msg == YAML::ErrorMsg::MAP_VALUE)
-    return "unexpected ':' (wrong indentation, a tab, or a value with ': ' that needs quotes?)";
-  if (error.msg == YAML::ErrorMsg::TAB_IN_INDENTATION)
-    return "a tab in the indentation; YAML indents with spaces";
-  return error.msg;
-}
-
 SceneError errorAt(const std::string& source, const YAML::Mark& mark, const std::string& message) {
   return SceneError(source, mark.line + 1, mark.column + 1, message);
 }
@@ -268,7 +251,7 @@ SceneError errorAt(const std::string& source, const YAML::Mark& mark, const std:
 
 Scene loadScene(std::string_view text, std::string sourceName) {
   try {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(std::string(text));
+    const std::vector<YAML::Node> documents = parseYaml(text, sourceName);
     if (documents.empty() || documents[0].IsNull())
       throw SceneError(sourceName,
                        "the scene file is empty; expected at least 'camera' and 'objects'");
@@ -280,8 +263,6 @@ Scene loadScene(std::string_view text, std::string sourceName) {
       failAt(second->Mark(),
              "a second YAML document (after '---'); expected the scene file to hold one scene");
     return readScene(documents[0], sourceName);
-  } catch (const YAML::ParserException& error) {
-    throw errorAt(sourceName, error.mark, "invalid YAML: " + explainSyntaxError(error, text));
   } catch (const YamlValueError& error) {
     throw errorAt(sourceName, error.mark(), error.what());
   }

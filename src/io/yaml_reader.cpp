@@ -113,7 +113,33 @@ double readBoundedNumber(const Field& field, Bound bound, std::string_view kind)
   return *value;
 }
 
+// yaml-cpp's wording for the syntax errors people make most, said plainly.
+std::string explainSyntaxError(const YAML::ParserException& error, std::string_view text) {
+  if (error.msg == YAML::ErrorMsg::END_OF_SEQ_FLOW)
+    return "a list opened with '[' is not closed with ']'";
+  if (error.msg == YAML::ErrorMsg::END_OF_MAP_FLOW)
+    return "a map opened with '{' is not closed with '}'";
+  if (error.msg == YAML::ErrorMsg::FLOW_END && error.mark.pos >= 0 &&
+      static_cast<std::size_t>(error.mark.pos) < text.size())
+    return std::string("unexpected '") + text[error.mark.pos] +
+           "'; check that the brackets before it are closed in order";
+  if (error.msg == YAML::ErrorMsg::MAP_VALUE)
+    return "unexpected ':' (wrong indentation, a tab, or a value with ': ' that needs quotes?)";
+  if (error.msg == YAML::ErrorMsg::TAB_IN_INDENTATION)
+    return "a tab in the indentation; YAML indents with spaces";
+  return error.msg;
+}
+
 }  // namespace
+
+std::vector<YAML::Node> parseYaml(std::string_view text, const std::string& sourceName) {
+  try {
+    return YAML::LoadAll(std::string(text));
+  } catch (const YAML::ParserException& error) {
+    throw SceneError(sourceName, error.mark.line + 1, error.mark.column + 1,
+                     "invalid YAML: " + explainSyntaxError(error, text));
+  }
+}
 
 std::string joinedWithCommas(const std::vector<std::string>& words) {
   std::string text;

@@ -17,8 +17,13 @@
 
 #include "core/color.hpp"
 #include "core/math.hpp"
+#include "io/scene_error.hpp"
 
 namespace rise {
+
+// The YAML documents of `text`. Throws SceneError naming `sourceName`, the
+// line and the column of a syntax error, said plainly.
+std::vector<YAML::Node> parseYaml(std::string_view text, const std::string& sourceName);
 
 // A problem at one place in a document; the scene loader adds the file name.
 class YamlValueError : public std::runtime_error {

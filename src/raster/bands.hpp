@@ -39,6 +39,7 @@ Counters drawInBands(const Workers& workers, const ScreenGeometry& screen,
   return workers.sumOverTasks<Counters>(static_cast<int>(bands.size()), [&](int band,
                                                                             Counters& counters) {
     draw(bands[static_cast<std::size_t>(band)], polygons[static_cast<std::size_t>(band)], counters);
+    workers.regionDone(bands[static_cast<std::size_t>(band)]);
   });
 }
 

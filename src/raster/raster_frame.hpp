@@ -37,6 +37,9 @@ class RasterFrame {
   // The number of pixels some face is seen at.
   std::uint64_t coveredPixels() const;
 
+  // The image as shaded so far.
+  const Image& image() const { return result_.image; }
+
   // The image and its buffers, for the render's result.
   RenderResult takeResult() { return std::move(result_); }
 

@@ -1,5 +1,7 @@
 #include "raster/visible_surface_renderer.hpp"
 
+#include <atomic>
+
 #include "core/random.hpp"
 #include "core/sampling.hpp"
 #include "render/film.hpp"
@@ -78,11 +80,39 @@ class PassObserver final : public RenderObserver {
   }
   bool cancelled() const override { return whole_.cancelled(); }
   StepRecorder* stepRecorder() override { return pass_ == 0 ? whole_.stepRecorder() : nullptr; }
+  void onPixelsDone(const PixelRect& region, const Image& image) override {
+    whole_.onPixelsDone(region, image);
+  }
 
  private:
   RenderObserver& whole_;
   int pass_;
   int passes_;
+};
+
+// Tells the render's observer of the frame's pixels in each region the
+// algorithm finishes; of the whole frame at the end when the algorithm's
+// work is not cut into regions of the image (Warnock's windows are handed out
+// as they are made).
+class FrameRegions final : public Progress {
+ public:
+  FrameRegions(RenderObserver& observer, const RasterFrame& frame)
+      : observer_(observer), frame_(frame) {}
+  ~FrameRegions() override {
+    if (!reported_ && !observer_.cancelled())
+      observer_.onPixelsDone({0, 0, frame_.width(), frame_.height()}, frame_.image());
+  }
+  void onProgress(double fractionDone) override { observer_.onProgress(fractionDone); }
+  bool cancelled() const override { return observer_.cancelled(); }
+  void onRegionDone(const PixelRect& region) override {
+    reported_ = true;
+    observer_.onPixelsDone(region, frame_.image());
+  }
+
+ private:
+  RenderObserver& observer_;
+  const RasterFrame& frame_;
+  std::atomic<bool> reported_{false};
 };
 
 }  // namespace
@@ -142,7 +172,10 @@ RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
 
   Stats stats;
   addProjectionStats(stats, screen);
-  resolveVisibility(screen, workers, frame, stats);
+  {
+    FrameRegions regions(observer, frame);
+    resolveVisibility(screen, Workers(settings.threads, regions), frame, stats);
+  }
   stats.add("covered_pixels", static_cast<double>(frame.coveredPixels()));
 
   RenderResult result = frame.takeResult();

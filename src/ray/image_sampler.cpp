@@ -63,12 +63,17 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
   std::vector<TileTrace> tiles;
   for (const PixelRect& area : makeTiles(settings.width, settings.height))
     tiles.emplace_back(area, film.tileFor(area), result, steps);
+  Image shown(settings.width, settings.height);
   const Workers workers(settings.threads, observer);
   workers.forEachTask(static_cast<int>(tiles.size()), [&](int index) {
     TileTrace& tile = tiles[static_cast<std::size_t>(index)];
     traceTile(tile);
     if (steps) steps->record(tileStep(tile), index);
+    tile.film().resolveInto(shown, tile.area());
+    observer.onPixelsDone(tile.area(), shown);
   });
+  // Nobody wants what a cancelled render made: return at once.
+  if (observer.cancelled()) return result;
 
   TraceCounters counters;
   std::uint64_t refinedPixels = 0;

@@ -125,4 +125,14 @@ void FilmTile::addSample(const glm::ivec2& pixel, const Vec2& offset, const Colo
   }
 }
 
+void FilmTile::resolveInto(Image& image, const PixelRect& area) const {
+  const int tileWidth = x1_ - x0_;
+  for (int y = area.y0; y < area.y1; ++y) {
+    for (int x = area.x0; x < area.x1; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y - y0_) * tileWidth + (x - x0_);
+      image.at(x, y) = weightSum_[i] > 0.0f ? weightedSum_[i] / weightSum_[i] : Color(0.0f);
+    }
+  }
+}
+
 }  // namespace rise

@@ -61,6 +61,11 @@ class FilmTile {
   // float sum would round into the next pixel.
   void addSample(const glm::ivec2& pixel, const Vec2& offset, const Color& color);
 
+  // Writes into `image`, at the pixels of `area` (inside the tile), the
+  // weighted average of the samples this tile holds: the final colours when
+  // the filter reaches no neighbour (the box), a close preview otherwise.
+  void resolveInto(Image& image, const PixelRect& area) const;
+
  private:
   friend class Film;
   FilmTile(const ReconstructionFilter& filter, int x0, int y0, int x1, int y1);

@@ -2,6 +2,18 @@
 
 namespace rise {
 
+std::string_view shadingName(Shading shading) {
+  switch (shading) {
+    case Shading::Flat:
+      return "flat";
+    case Shading::Gouraud:
+      return "gouraud";
+    case Shading::Phong:
+      return "phong";
+  }
+  return "?";
+}
+
 std::string_view accelName(Accel accel) {
   switch (accel) {
     case Accel::None:

@@ -22,6 +22,8 @@ std::string_view accelName(Accel accel);  // as on the command line: "bvh"
 // once per face, at the vertices with the colours interpolated (Gouraud), or
 // at every pixel with the normals interpolated (Phong).
 enum class Shading { Flat, Gouraud, Phong };
+inline constexpr Shading kAllShadings[] = {Shading::Flat, Shading::Gouraud, Shading::Phong};
+std::string_view shadingName(Shading shading);  // as on the command line: "gouraud"
 
 // How to render, whatever the algorithm. The image size comes from the scene
 // unless the command line overrides it.

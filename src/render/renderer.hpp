@@ -28,13 +28,19 @@ struct RenderResult {
   Stats stats;
 };
 
-// Watches a render from outside: progress for a bar, cancellation for the
-// studio, and the algorithm's steps for whoever wants to see them. The render
-// calls it from its worker threads, one call at a time.
+// Watches a render from outside: progress for a bar; cancellation, and the
+// image as it is made, for the studio; and the algorithm's steps for whoever
+// wants to see them. The render calls it from its worker threads, one call at
+// a time but for onPixelsDone.
 class RenderObserver : public Progress {
  public:
   // Where the algorithm reports its steps, or nullptr when nobody listens.
   virtual StepRecorder* stepRecorder() { return nullptr; }
+  // The pixels of `region` are final in `image` (linear colours, the size of
+  // the render's image), so that a front end may show them before the render
+  // ends. Called by the task that finished them while others may be writing
+  // elsewhere in `image`: read only the region, and only during the call.
+  virtual void onPixelsDone(const PixelRect& /*region*/, const Image& /*image*/) {}
 };
 
 // The two families of algorithms: those that project polygons and find the

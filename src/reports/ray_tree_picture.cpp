@@ -13,6 +13,7 @@
 
 #include "algorithms/registry.hpp"
 #include "io/image_io.hpp"
+#include "reports/colours.hpp"
 
 namespace rise {
 namespace {
@@ -100,20 +101,6 @@ std::optional<std::pair<Vec2, Vec2>> projectSegment(const ViewFrame& view, Segme
   return std::pair{*from, *to};
 }
 
-const char* strokeOf(const RayNode& ray) {
-  switch (ray.kind) {
-    case RayKind::Primary:
-      return "#ffffff";
-    case RayKind::Shadow:
-      return ray.transmittance == Color(0.0f) ? "#ff3d00" : "#ffd600";
-    case RayKind::Reflection:
-      return "#00e5ff";
-    case RayKind::Refraction:
-      return "#e040fb";
-  }
-  return "#ffffff";
-}
-
 void drawView(std::ostringstream& svg, const ViewFrame& view, const std::string& image, float left,
               const std::vector<Segment>& segments) {
   svg << "<image x=\"" << left << "\" y=\"0\" width=\"" << view.width() << "\" height=\""
@@ -123,11 +110,11 @@ void drawView(std::ostringstream& svg, const ViewFrame& view, const std::string&
     if (!line) continue;
     svg << "<line x1=\"" << left + line->first.x << "\" y1=\"" << line->first.y << "\" x2=\""
         << left + line->second.x << "\" y2=\"" << line->second.y << "\" stroke=\""
-        << strokeOf(*segment.ray) << "\" stroke-width=\"1.5\""
+        << colourOfRay(*segment.ray) << "\" stroke-width=\"1.5\""
         << (segment.ray->kind == RayKind::Shadow ? " stroke-dasharray=\"4 3\"" : "") << "/>\n";
     if (segment.ray->hit)
       svg << "<circle cx=\"" << left + line->second.x << "\" cy=\"" << line->second.y
-          << "\" r=\"2.5\" fill=\"" << strokeOf(*segment.ray) << "\"/>\n";
+          << "\" r=\"2.5\" fill=\"" << colourOfRay(*segment.ray) << "\"/>\n";
   }
 }
 

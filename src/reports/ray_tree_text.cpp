@@ -26,9 +26,17 @@ std::string numbers(std::initializer_list<float> values) {
 std::string text(const Vec2& v) { return numbers({v.x, v.y}); }
 std::string text(const Vec3& v) { return numbers({v.x, v.y, v.z}); }
 
-void printRay(std::ostream& out, const Scene& scene, const RayTree& tree, int index,
-              const std::string& indent) {
+void printRayAndItsOwn(std::ostream& out, const Scene& scene, const RayTree& tree, int index,
+                       const std::string& indent) {
   const RayNode& ray = tree.rays[static_cast<std::size_t>(index)];
+  printRay(out, scene, ray, indent);
+  for (int child : ray.children) printRayAndItsOwn(out, scene, tree, child, indent + "  ");
+}
+
+}  // namespace
+
+void printRay(std::ostream& out, const Scene& scene, const RayNode& ray,
+              const std::string& indent) {
   out << indent << toString(ray.kind) << " ray from " << text(ray.origin) << " along "
       << text(ray.direction);
   if (ray.kind == RayKind::Shadow) {
@@ -51,10 +59,7 @@ void printRay(std::ostream& out, const Scene& scene, const RayTree& tree, int in
       << ray.distance << " away, normal " << text(ray.normal) << ", uv " << text(ray.uv) << "\n"
       << indent << "  ambient " << text(ray.ambient) << "; adds " << text(ray.contribution)
       << "; brings back " << text(ray.color) << "\n";
-  for (int child : ray.children) printRay(out, scene, tree, child, indent + "  ");
 }
-
-}  // namespace
 
 void printRayTrees(std::ostream& out, const Scene& scene, const std::vector<RayTree>& trees,
                    const Color& pixelColor) {
@@ -68,7 +73,7 @@ void printRayTrees(std::ostream& out, const Scene& scene, const std::vector<RayT
           << ", light " << text(tree.dimensions->light) << ", gloss "
           << text(tree.dimensions->gloss) << ")";
     out << "\n";
-    printRay(out, scene, tree, 0, "  ");
+    printRayAndItsOwn(out, scene, tree, 0, "  ");
   }
 }
 

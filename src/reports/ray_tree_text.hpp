@@ -5,12 +5,16 @@
 #pragma once
 
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include "render/ray_tree.hpp"
 #include "scene/scene.hpp"
 
 namespace rise {
+
+// One ray's lines, without the rays it spawned, each opening with `indent`.
+void printRay(std::ostream& out, const Scene& scene, const RayNode& ray, const std::string& indent);
 
 void printRayTrees(std::ostream& out, const Scene& scene, const std::vector<RayTree>& trees,
                    const Color& pixelColor);

@@ -9,6 +9,7 @@
 
 #include "io/image_io.hpp"
 #include "render/buffer_images.hpp"
+#include "reports/colours.hpp"
 #include "reports/step_json.hpp"
 #include "reports/step_player_html.hpp"
 #include "reports/step_replay.hpp"

@@ -4,25 +4,15 @@
 #include <cmath>
 
 #include "io/image_io.hpp"
+#include "reports/colours.hpp"
 
 namespace rise {
 namespace {
 
-constexpr const char* kOtherRole = "other";
-
 Color linearColourOf(const std::string& hex) {
-  const auto channel = [&](std::size_t at) {
-    return linearFromSrgb(static_cast<float>(std::stoi(hex.substr(at, 2), nullptr, 16)) / 255.0f);
-  };
-  return {channel(1), channel(3), channel(5)};
-}
-
-Color colourOfRole(const std::string& role) {
-  const auto& colours = shapeColours();
-  const auto found = std::find_if(colours.begin(), colours.end(),
-                                  [&](const auto& entry) { return entry.first == role; });
-  if (found != colours.end()) return linearColourOf(found->second);
-  return colourOfRole(kOtherRole);
+  const auto bytes = bytesOfColour(hex);
+  return {linearFromSrgb(bytes[0] / 255.0f), linearFromSrgb(bytes[1] / 255.0f),
+          linearFromSrgb(bytes[2] / 255.0f)};
 }
 
 void plot(Image& image, int x, int y, const Color& colour) {
@@ -56,16 +46,9 @@ std::vector<Vec2> rectangleCorners(const std::vector<Vec2>& points) {
 
 }  // namespace
 
-const std::vector<std::pair<std::string, std::string>>& shapeColours() {
-  static const std::vector<std::pair<std::string, std::string>> colours = {
-      {"window", "#ffcc00"}, {"polygon", "#00e5ff"}, {kOtherRole, "#ff4081"}, {"behind", "#7c4dff"},
-      {"front", "#00e676"},  {"span", "#ffea00"},    {"edge", "#ff9100"},     {"tile", "#ffffff"}};
-  return colours;
-}
-
 void drawShapes(Image& image, const std::vector<StepShape>& shapes) {
   for (const StepShape& shape : shapes) {
-    const Color colour = colourOfRole(shape.role);
+    const Color colour = linearColourOf(colourOfRole(shape.role));
     switch (shape.kind) {
       case StepShape::Kind::Rectangle:
         drawOutline(image, rectangleCorners(shape.points), true, colour);

@@ -1,4 +1,4 @@
-#include "comparison_report.hpp"
+#include "reports/comparison_report.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -8,17 +8,8 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace rise::cli {
+namespace rise {
 namespace {
-
-// Every statistic any algorithm reported, in the order they first appear.
-std::vector<std::string> statisticNames(const std::vector<ComparedRender>& renders) {
-  std::vector<std::string> names;
-  for (const ComparedRender& render : renders)
-    for (const auto& [name, value] : render.result.stats.entries())
-      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
-  return names;
-}
 
 const double* findValue(const Stats& stats, const std::string& name) {
   for (const auto& [key, value] : stats.entries())
@@ -33,11 +24,6 @@ std::string formatNumber(double value) {
   else
     out << std::setprecision(4) << value;
   return out.str();
-}
-
-std::string cell(const Stats& stats, const std::string& name) {
-  const double* value = findValue(stats, name);
-  return value != nullptr ? formatNumber(*value) : "";
 }
 
 std::string escapeHtml(const std::string& text) {
@@ -77,7 +63,7 @@ std::string csv(const std::vector<ComparedRender>& renders, const std::vector<st
   out << "\n";
   for (const ComparedRender& render : renders) {
     out << std::string(render.algorithm->name);
-    for (const std::string& name : names) out << "," << cell(render.result.stats, name);
+    for (const std::string& name : names) out << "," << statisticCell(render.result.stats, name);
     out << "\n";
   }
   return out.str();
@@ -95,7 +81,7 @@ std::string markdown(const std::string& sceneName, const std::vector<ComparedRen
   for (const std::string& name : names) {
     out << "| " << name << " |";
     for (const ComparedRender& render : renders)
-      out << " " << cell(render.result.stats, name) << " |";
+      out << " " << statisticCell(render.result.stats, name) << " |";
     out << "\n";
   }
   return out.str();
@@ -151,7 +137,7 @@ std::string html(const std::string& sceneName, const std::vector<ComparedRender>
   for (const std::string& name : names) {
     out << "<tr><th>" << escapeHtml(name) << "</th>";
     for (const ComparedRender& render : renders)
-      out << "<td>" << cell(render.result.stats, name) << "</td>";
+      out << "<td>" << statisticCell(render.result.stats, name) << "</td>";
     out << "</tr>\n";
   }
   out << "</table>\n</body></html>\n";
@@ -159,6 +145,20 @@ std::string html(const std::string& sceneName, const std::vector<ComparedRender>
 }
 
 }  // namespace
+
+// Every statistic any algorithm reported, in the order they first appear.
+std::vector<std::string> statisticNames(const std::vector<ComparedRender>& renders) {
+  std::vector<std::string> names;
+  for (const ComparedRender& render : renders)
+    for (const auto& [name, value] : render.result.stats.entries())
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+  return names;
+}
+
+std::string statisticCell(const Stats& stats, const std::string& name) {
+  const double* value = findValue(stats, name);
+  return value != nullptr ? formatNumber(*value) : "";
+}
 
 std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& directory,
                                                    const std::string& sceneName,
@@ -186,4 +186,4 @@ std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& 
   return written;
 }
 
-}  // namespace rise::cli
+}  // namespace rise

@@ -7,13 +7,26 @@
 #include "io/image_io.hpp"
 #include "render/renderer.hpp"
 
-namespace rise::cli {
+namespace rise {
+
+// The comparison of algorithms on one scene that `rise compare` writes and
+// the studio shows and writes: apart from both front ends, above the
+// registry, as it reports on renders (io/, which reads and writes files, is
+// below the render layer whose results it would need).
 
 // One algorithm's render of the compared scene.
 struct ComparedRender {
   const AlgorithmDescription* algorithm;
   RenderResult result;
 };
+
+// Every statistic any of the renders reported, in the order they first
+// appear: the rows of the comparison's table.
+std::vector<std::string> statisticNames(const std::vector<ComparedRender>& renders);
+
+// A statistic as the table shows it ("" when the render has none): whole
+// numbers in full, others to four significant digits.
+std::string statisticCell(const Stats& stats, const std::string& name);
 
 // Writes, into `directory`, each algorithm's image (<algorithm>.png), the
 // times and counters of all of them as results.csv (one row an algorithm)
@@ -26,4 +39,4 @@ std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& 
                                                    const std::vector<ComparedRender>& renders,
                                                    Encoding encoding);
 
-}  // namespace rise::cli
+}  // namespace rise

@@ -1,0 +1,97 @@
+// The scene's YAML text, editable: Apply loads it, and a text that does not
+// load is refused with the loader's message, shown under the line and column
+// it points at, while the last good scene stays.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include "studio.hpp"
+
+namespace rise::studio {
+namespace {
+
+// The 0-based offset of a 1-based line and column in the text.
+int offsetOf(const std::string& text, int line, int column) {
+  std::size_t offset = 0;
+  for (int l = 1; l < line && offset != std::string::npos; ++l) {
+    offset = text.find('\n', offset);
+    if (offset != std::string::npos) ++offset;
+  }
+  if (offset == std::string::npos) return static_cast<int>(text.size());
+  return static_cast<int>(
+      std::min(text.size(), offset + static_cast<std::size_t>(std::max(column - 1, 0))));
+}
+
+std::string lineOf(const std::string& text, int line) {
+  const auto begin = static_cast<std::size_t>(offsetOf(text, line, 1));
+  const std::size_t end = text.find('\n', begin);
+  return text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+}
+
+int moveCursor(ImGuiInputTextCallbackData* data) {
+  int& pending = *static_cast<int*>(data->UserData);
+  if (pending >= 0) {
+    data->CursorPos = data->SelectionStart = data->SelectionEnd =
+        std::min(pending, data->BufTextLen);
+    pending = -1;
+  }
+  return 0;
+}
+
+}  // namespace
+
+void Studio::drawTextPanel() {
+  ImGui::SetNextWindowPos({0, 680}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize({400, 300}, ImGuiCond_FirstUseEver);
+  ImGui::Begin("Scene text");
+  const bool textRefused = session_.problem() && !session_.refusedText().empty();
+  if (!textEdited_ && textRevision_ != session_.revision()) {
+    text_ = textRefused ? session_.refusedText()
+                        : (session_.document() ? session_.document()->text() : std::string());
+    textRevision_ = session_.revision();
+  }
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool apply = ImGui::Button("Apply") ||
+                     (textFocused_ && io.KeyCtrl && ImGui::IsKeyPressed(GLFW_KEY_ENTER, false));
+  track("Apply");
+  ImGui::SameLine();
+  if (ImGui::Button("Revert") && session_.document()) {
+    text_ = session_.document()->text();
+    textEdited_ = false;
+    session_.dismissProblem();
+  }
+  ImGui::SameLine();
+  ImGui::TextDisabled(textEdited_ ? "edited: Apply (Ctrl+Enter) loads it" : "");
+  if (apply) applyText(text_);
+
+  float errorHeight = 0.0f;
+  if (textRefused) errorHeight = ImGui::GetTextLineHeightWithSpacing() * 5;
+  if (!textEdited_ && textRefused) text_ = session_.refusedText();
+  if (pendingCursor_ >= 0) ImGui::SetKeyboardFocusHere();
+  if (ImGui::InputTextMultiline(
+          "##text", &text_, {-1, -1 - errorHeight},
+          ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_CallbackAlways, moveCursor,
+          &pendingCursor_))
+    textEdited_ = true;
+  textFocused_ = ImGui::IsItemActive();
+  track("text");
+  if (textRefused) {
+    const Problem& problem = *session_.problem();
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", problem.message.c_str());
+    ImGui::PopStyleColor();
+    if (problem.line > 0) {
+      // The line, and a caret under the column, as a compiler shows them.
+      const std::string number = std::to_string(problem.line);
+      ImGui::Text("%s | %s", number.c_str(), lineOf(text_, problem.line).c_str());
+      ImGui::Text(
+          "%s | %s^", std::string(number.size(), ' ').c_str(),
+          std::string(static_cast<std::size_t>(std::max(problem.column - 1, 0)), ' ').c_str());
+      if (ImGui::SmallButton("Go to the error"))
+        pendingCursor_ = offsetOf(text_, problem.line, problem.column);
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace rise::studio
