@@ -40,7 +40,13 @@ struct TessellationSettings {
 // A point of a surface, as a corner of the triangles that cover it.
 struct SurfaceVertex {
   Vec3 position;
-  Vec3 normal;  // unit: the exact surface's normal, or a flat face's
+  // The exact surface's unit normal there, or a flat face's; but where the
+  // surface's normals converge to a point that has none of its own (a
+  // cone's apex), shorter, down to zero at the point: interpolation across
+  // a triangle weighs each corner's normal, and its colour in Gouraud
+  // shading, by its length, so that the other corners decide near that
+  // point.
+  Vec3 normal;
   Vec2 uv{0.0f};
 };
 

@@ -31,11 +31,15 @@ int piecesPerSide(const Tessellation& surface, float longestPiece) {
 SurfaceVertex pointOf(const std::array<SurfaceVertex, 3>& corners,
                       const std::array<int, 3>& weights, int pieces) {
   Vec3 position(0.0f), normal(0.0f);
+  float normalLength = 0.0f;
   for (int corner = 0; corner < 3; ++corner) {
-    position += static_cast<float>(weights[corner]) * corners[corner].position;
-    normal += static_cast<float>(weights[corner]) * corners[corner].normal;
+    const auto weight = static_cast<float>(weights[corner]);
+    position += weight * corners[corner].position;
+    normal += weight * corners[corner].normal;
+    normalLength += weight * glm::length(corners[corner].normal);
   }
-  return {position / static_cast<float>(pieces), glm::normalize(normal)};
+  const auto whole = static_cast<float>(pieces);
+  return {position / whole, normalLength / whole * normalizedOrZero(normal)};
 }
 
 }  // namespace
