@@ -145,9 +145,9 @@ void expectAgreement(const Material& material, Shading shading, std::span<const 
                                    std::to_string(width) + " x " + std::to_string(height);
           const Agreement colours = agreementInside(scene, drawn, traced);
           EXPECT_GT(colours.pixelsCompared, width * height / 20) << what;
-          EXPECT_LE(colours.worstLevels, allowedLevels) << what << ": " << colours;
+          EXPECT_LE(colours.worst, allowedLevels) << what << ": " << colours;
           const Agreement steps = stepAgreementInside(scene, drawn, traced);
-          EXPECT_LE(steps.worstLevels, allowedStep) << what << ", steps: " << steps;
+          EXPECT_LE(steps.worst, allowedStep) << what << ", steps: " << steps;
         }
       }
 }

@@ -91,18 +91,24 @@ void SurfaceShader::lightVertices(const Workers& workers) {
 
 // How far the texture coordinates move from this pixel to the next across
 // and down, by the face's perspective-correct barycentric coordinates one
-// pixel away.
-PixelFootprint SurfaceShader::uvFootprint(int face, const Vec2& centre) const {
+// pixel away: the corners' coordinates interpolated there, or the shape's
+// projection at the points there.
+PixelFootprint SurfaceShader::uvFootprint(int face, const Vec2& centre,
+                                          const SurfacePoint& surface) const {
   const ScreenFace& screenFace = screen_.faces[face];
   const SceneFace& sceneFace = tessellated_.faces[screenFace.sceneFace];
-  const auto uvAt = [&](const Vec2& raster) {
+  const std::optional<PlacedProjection>& projection = tessellated_.projections[sceneFace.shape];
+  const auto stepTo = [&](const Vec2& raster) {
     const Vec3 weights = screenFace.barycentricAt(raster);
-    return weights.x * tessellated_.vertices[sceneFace.vertices[0]].uv +
-           weights.y * tessellated_.vertices[sceneFace.vertices[1]].uv +
-           weights.z * tessellated_.vertices[sceneFace.vertices[2]].uv;
+    const auto at = [&](auto member) {
+      return weights.x * tessellated_.vertices[sceneFace.vertices[0]].*member +
+             weights.y * tessellated_.vertices[sceneFace.vertices[1]].*member +
+             weights.z * tessellated_.vertices[sceneFace.vertices[2]].*member;
+    };
+    return projection ? projection->stepTo(surface, at(&SurfaceVertex::position))
+                      : at(&SurfaceVertex::uv) - surface.uv;
   };
-  const Vec2 here = uvAt(centre);
-  return {uvAt(centre + Vec2(1.0f, 0.0f)) - here, uvAt(centre + Vec2(0.0f, 1.0f)) - here};
+  return {stepTo(centre + Vec2(1.0f, 0.0f)), stepTo(centre + Vec2(0.0f, 1.0f))};
 }
 
 ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
@@ -117,8 +123,11 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
                                           Vec2(weights.y, weights.z)),
                        weights.x * a.uv + weights.y * b.uv + weights.z * c.uv);
 
+  const std::optional<PlacedProjection>& projection = tessellated_.projections[sceneFace.shape];
+  if (projection) projection->mapOnto(surface);
+
   const Material& material = scene_.materials[sceneFace.material];
-  const SurfaceColors colors = surfaceColors(material, surface, uvFootprint(face, centre));
+  const SurfaceColors colors = surfaceColors(material, surface, uvFootprint(face, centre, surface));
   const int side = sideSeen(screenFace);
   Color color;
   switch (shading_) {
@@ -139,8 +148,9 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
       // Bump and normal maps tilt the normal at every pixel, Phong shading
       // alone having a normal per pixel.
       if (material.bump || material.normalMap) {
-        triangleTangents(a.position, b.position, c.position, a.uv, b.uv, c.uv, surface.dpdu,
-                         surface.dpdv);
+        if (!projection)
+          triangleTangents(a.position, b.position, c.position, a.uv, b.uv, c.uv, surface.dpdu,
+                           surface.dpdv);
         surface.shadingNormal = shadingNormal(material, surface);
       }
       color = unshadowedLight(scene_, material, colors, surface.position,

@@ -38,6 +38,7 @@ void tessellatePlaced(const Shape& shape, const Mat4& worldFromObject,
     vertex.position = Vec3(worldFromObject * glm::vec4(vertex.position, 1.0f));
     vertex.normal = glm::length(vertex.normal) * normalizedOrZero(normalToWorld * vertex.normal);
   }
+  out.projectionPlacement = worldFromObject * out.projectionPlacement;
   if (glm::determinant(Mat3(worldFromObject)) < 0.0f)
     for (auto& triangle : out.triangles) std::swap(triangle[1], triangle[2]);
 }

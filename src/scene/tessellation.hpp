@@ -13,6 +13,7 @@
 
 namespace rise {
 
+class ProjectedMapping;
 class Shape;
 
 // How finely curved surfaces are cut by default: a circle into 32 segments.
@@ -60,6 +61,13 @@ struct Tessellation {
   // be culled. Open surfaces (planes, polygons, most meshes) are seen from
   // both sides.
   bool enclosesSolid = false;
+  // The projected mapping the shape wears (shapes/mapped_shape.hpp), or
+  // none. A projection is not affine across a triangle: a renderer computes
+  // the texture coordinates at each point by it, as the ray tracer does at
+  // each hit, rather than interpolating the corners'. `projectionPlacement`
+  // takes the space the projection is made in to the triangles'.
+  const ProjectedMapping* projection = nullptr;
+  Mat4 projectionPlacement{1.0f};
 
   int addVertex(const SurfaceVertex& vertex);
   // A triangle; one with a repeated corner (a sphere's pole) is left out.

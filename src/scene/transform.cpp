@@ -40,6 +40,18 @@ SurfacePoint AffineMap::toWorld(const SurfacePoint& object) const {
   return world;
 }
 
+SurfacePoint AffineMap::toObject(const SurfacePoint& world) const {
+  // Normals go back by the transpose of the inverse's inverse transpose.
+  const Mat3 normalToObject = glm::transpose(Mat3(worldFromObject_));
+  SurfacePoint object = world;
+  object.position = Vec3(objectFromWorld_ * glm::vec4(world.position, 1.0f));
+  object.normal = glm::normalize(normalToObject * world.normal);
+  object.shadingNormal = glm::normalize(normalToObject * world.shadingNormal);
+  object.dpdu = Mat3(objectFromWorld_) * world.dpdu;
+  object.dpdv = Mat3(objectFromWorld_) * world.dpdv;
+  return object;
+}
+
 Vec3 AffineMap::pointToWorld(const Vec3& point) const {
   return Vec3(worldFromObject_ * glm::vec4(point, 1.0f));
 }

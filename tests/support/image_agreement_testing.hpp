@@ -72,17 +72,18 @@ inline std::vector<bool> outlines(const Scene& scene, const RenderResult& a, con
   return near;
 }
 
-// The largest difference between two images over the pixels `compared`
-// admits, where it is, and how many pixels were compared.
+// The largest difference between two images (in levels, or pixels of
+// offset) over the pixels compared, where it is, and how many pixels were
+// compared.
 struct Agreement {
-  int worstLevels = 0;
+  int worst = 0;
   int worstX = -1;
   int worstY = -1;
   int pixelsCompared = 0;
 };
 
 inline std::ostream& operator<<(std::ostream& out, const Agreement& agreement) {
-  return out << agreement.worstLevels << " levels apart at (" << agreement.worstX << ", "
+  return out << "at worst " << agreement.worst << " at (" << agreement.worstX << ", "
              << agreement.worstY << ") over " << agreement.pixelsCompared << " pixels";
 }
 
@@ -94,7 +95,7 @@ inline Agreement agreementWhere(const Image& a, const Image& b,
       if (!compared(x, y)) continue;
       ++agreement.pixelsCompared;
       const int difference = levelDifference(a.at(x, y), b.at(x, y));
-      if (difference <= agreement.worstLevels) continue;
+      if (difference <= agreement.worst) continue;
       agreement = {difference, x, y, agreement.pixelsCompared};
     }
   return agreement;
@@ -130,9 +131,41 @@ inline Agreement stepAgreementInside(const Scene& scene, const RenderResult& a,
           const int stepB = level(b.image.at(nx, ny)[channel]) - level(b.image.at(x, y)[channel]);
           worst = std::max(worst, std::abs(stepA - stepB));
         }
-        if (worst > agreement.worstLevels)
-          agreement = {worst, x, y, agreement.pixelsCompared};
+        if (worst > agreement.worst) agreement = {worst, x, y, agreement.pixelsCompared};
       }
+  return agreement;
+}
+
+// How far, in pixels, the pixels of `drawn` inside the outlines are from
+// where `reference` shows their colour (the distance, in the larger of x and
+// y, to the nearest pixel of that colour, searched up to `farthest`, and
+// farthest + 1 when none is found): where two images of a texture of flat
+// texels agree but for texel edges a little apart, their offset.
+inline Agreement offsetInside(const Scene& scene, const RenderResult& drawn,
+                              const RenderResult& reference, int farthest = 8) {
+  const std::vector<bool> outline = outlines(scene, drawn, reference);
+  const Image& a = drawn.image;
+  const Image& b = reference.image;
+  const auto same = [](const Color& p, const Color& q) { return levelDifference(p, q) <= 1; };
+  Agreement agreement;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x) {
+      if (outline[y * a.width() + x]) continue;
+      ++agreement.pixelsCompared;
+      int offset = 0;
+      while (offset <= farthest) {
+        bool found = false;
+        for (int dy = -offset; dy <= offset && !found; ++dy)
+          for (int dx = -offset; dx <= offset && !found; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            found = nx >= 0 && ny >= 0 && nx < a.width() && ny < a.height() &&
+                    same(a.at(x, y), b.at(nx, ny));
+          }
+        if (found) break;
+        ++offset;
+      }
+      if (offset > agreement.worst) agreement = {offset, x, y, agreement.pixelsCompared};
+    }
   return agreement;
 }
 
