@@ -18,6 +18,7 @@
 #include "scene/shapes/sphere.hpp"
 #include "scene/shapes/triangle_mesh.hpp"
 #include "support/image_agreement_testing.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {
@@ -90,7 +91,8 @@ std::vector<ShapeCase> shapeCases() {
 
 // One grey shape seen from above and in front, lit by one point light
 // beside the eye: no other surface for a shadow to fall on.
-Scene sceneOf(const ShapeCase& shape, const Material& material, int width, int height) {
+Scene sceneOf(const ShapeCase& shape, const Material& material, int width, int height,
+              const Vec3& light = Vec3(3.0f, 4.5f, -5.0f)) {
   Scene scene;
   scene.image.width = width;
   scene.image.height = height;
@@ -99,7 +101,7 @@ Scene sceneOf(const ShapeCase& shape, const Material& material, int width, int h
   scene.camera.lookAt = Vec3(0.0f, 0.7f, 0.0f);
   scene.camera.fovDegrees = 45.0f;
   scene.ambient = Color(0.4f);
-  scene.lights.push_back(std::make_unique<PointLight>(Vec3(3.0f, 4.5f, -5.0f), Color(1.0f)));
+  scene.lights.push_back(std::make_unique<PointLight>(light, Color(1.0f)));
   scene.materials.push_back(material);
   scene.shapes.push_back(shape.make());
   return scene;
@@ -166,6 +168,30 @@ TEST(ShadingAgreement, PhongShadingMatchesTheRayTracerOnEveryShape) {
 TEST(ShadingAgreement, GouraudShadingMatchesTheRayTracerLooselyOnEveryShape) {
   constexpr int kLevels[] = {8, 12, 24};
   expectAgreement(grey(0.0f), Shading::Gouraud, kLevels, 8, 3);
+}
+
+// Lit from the other side, the smooth mesh turns from the light across the
+// image: the line where the light grazes it, the terminator, runs over its
+// front. The polygons of the visible-surface algorithms are the mesh's own
+// triangles, so that the two families must agree there too. The ray
+// tracer, which took the flat triangles' side of the light and sent its
+// shadow rays from them, cut the light off along their edges in steps of 33
+// to 53 levels; it takes both from the smooth surface
+// (ray/shadow_terminator.hpp).
+TEST(ShadingAgreement, TheRayTracersTerminatorFollowsASmoothMeshsNormals) {
+  const ShapeCase mesh{"mesh", [] { return smoothEllipsoid(Vec3(1.1f, 0.8f, 0.9f), 0); }};
+  for (const Vec3 light :
+       {Vec3(-3.0f, 5.0f, -4.0f), Vec3(-4.0f, 1.0f, 0.0f), Vec3(0.0f, 4.0f, 3.0f)})
+    for (const auto& [width, height] : {std::pair{150, 150}, std::pair{240, 120}}) {
+      const Scene scene = sceneOf(mesh, grey(0.3f), width, height, light);
+      const RenderSettings settings = settingsFor(scene, Shading::Phong, kDefaultTessellationLevel);
+      const RenderResult drawn = renderWith("z-buffer", scene, settings);
+      const RenderResult traced = renderWith("ray-tracing", scene, settings);
+      const Agreement colours = agreementInside(scene, drawn, traced);
+      EXPECT_LE(colours.worst, 3) << shape_testing::text(light) << ": " << colours;
+      const Agreement steps = stepAgreementInside(scene, drawn, traced);
+      EXPECT_LE(steps.worst, 3) << shape_testing::text(light) << ", steps: " << steps;
+    }
 }
 
 }  // namespace

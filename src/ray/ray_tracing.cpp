@@ -28,7 +28,9 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 
+#include "ray/shadow_terminator.hpp"
 #include "scene/light.hpp"
 #include "shading/phong.hpp"
 
@@ -109,10 +111,12 @@ class Recursion {
     Color color(0.0f);
     for (const auto& light : context_.scene.lights) {
       const LightSample sample = choices_.aimAt(*light, frame.surface.position, depth);
-      if (glm::dot(frame.normal, sample.toLight) <= 0.0f) continue;
+      const std::optional<Ray> shadow =
+          shadowRay(frame.surface, frame.normal, sample.toLight, frame.time);
+      if (!shadow) continue;
       ++counters_.shadowRays;
-      const Color visible = context_.intersector.transmittance(
-          spawnRay(frame, sample.toLight), 0.0f, sample.distance, counters_.intersections);
+      const Color visible = context_.intersector.transmittance(*shadow, 0.0f, sample.distance,
+                                                               counters_.intersections);
       if (visible == Color(0.0f)) continue;
       color += visible * phongDirect(material, colors, frame.shadingNormal, frame.toViewer, sample);
     }
