@@ -103,9 +103,9 @@ void expectTessellationAgreesWithRayTracing(const Shape& shape, float largestUSp
   for (const SurfaceVertex& vertex : tessellation.vertices) {
     // Straight in towards the vertex, from outside, along its normal; a ray
     // that grazes an edge may miss, or find the face across the edge.
-    const Vec3 origin = vertex.position + 0.5f * vertex.normal;
-    const auto result = intersect(shape, Ray{origin, -vertex.normal});
-    if (!result.found || glm::dot(result.surface.normal, vertex.normal) < 0.999f) continue;
+    const Vec3 normal = normalizedOrZero(vertex.normal);
+    const auto result = intersect(shape, Ray{vertex.position + 0.5f * normal, -normal});
+    if (!result.found || glm::dot(result.surface.normal, normal) < 0.999f) continue;
     ++checked;
     // At the poles and the apex u is not defined.
     const bool atSingularEnd = uSingularAtVEnds && (vertex.uv.y > 0.9999f || vertex.uv.y < 1e-4f);

@@ -20,6 +20,7 @@
 #include "scene/shapes/cylinder.hpp"
 #include "scene/shapes/mapped_shape.hpp"
 #include "scene/shapes/sphere.hpp"
+#include "scene/shapes/transformed_shape.hpp"
 #include "scene/textures/image_texture.hpp"
 #include "scene/textures/mesh_mapping.hpp"
 #include "scene/textures/surface_mapping.hpp"
@@ -162,7 +163,7 @@ float uSpan(const Tessellation& tessellation, const std::array<int, 3>& triangle
   return high - low;
 }
 
-TEST(ProjectedMapping, TessellationHasTheRayTracersCoordinatesWithoutASmearAtTheSeam) {
+TEST(ProjectedMapping, TessellationHasTheRayTracersCoordinatesAtItsVertices) {
   const auto box = mapped(std::make_unique<Box>(Vec3(-1.0f), Vec3(1.0f), 0), Projection::Spherical);
   const Tessellation tessellation = tessellationOf(*box);
   for (const SurfaceVertex& vertex : tessellation.vertices) {
@@ -178,34 +179,23 @@ TEST(ProjectedMapping, TessellationHasTheRayTracersCoordinatesWithoutASmearAtThe
     }
     EXPECT_NEAR(hit.surface.uv.y, vertex.uv.y, 1e-4f);
   }
-  // The seam runs down the middle of the +x face: the triangles across it
-  // take u beyond 1 rather than spanning the whole texture backwards.
-  int acrossTheSeam = 0;
-  for (const auto& triangle : tessellation.triangles) {
-    float nearestToTheAxis = kInfinity;
-    for (int corner : triangle) {
-      const Vec3& p = tessellation.vertices[corner].position;
-      nearestToTheAxis = std::min(nearestToTheAxis, std::hypot(p.x, p.z));
-    }
-    // Near the poles u turns fast; elsewhere a piece spans a small part of a turn.
-    if (nearestToTheAxis > 0.5f) {
-      EXPECT_LT(uSpan(tessellation, triangle), 0.2f);
-    }
-    for (int corner : triangle) acrossTheSeam += tessellation.vertices[corner].uv.x > 1.0f;
-  }
-  EXPECT_GT(acrossTheSeam, 0);
 }
 
-TEST(ProjectedMapping, CylinderTessellationIsRefinedAndKeepsItsEdgesShared) {
-  const auto cylinder = mapped(std::make_unique<Cylinder>(Vec3(0.0f), Vec3(0, 1, 0), 0.5f, 4.0f, 0),
-                               Projection::Cylindrical);
-  const Tessellation tessellation = tessellationOf(*cylinder);
-  EXPECT_TRUE(tessellation.enclosesSolid);
-  for (const auto& triangle : tessellation.triangles) {
-    const SurfaceVertex& a = tessellation.vertices[triangle[0]];
-    if (std::abs(a.normal.y) > 0.5f) continue;  // a cap, where u turns around its centre
-    EXPECT_LT(uSpan(tessellation, triangle), 1.01f / 16.0f);
-  }
+// The triangles are the shape's own; the projection rides along, placed
+// with them, for the coordinates at every point between the corners.
+TEST(ProjectedMapping, TessellationCarriesTheProjectionWhereverItIsPlaced) {
+  const Cylinder cylinder(Vec3(0.0f), Vec3(0, 1, 0), 0.5f, 4.0f, 0);
+  TransformSpec placement;
+  placement.rotateDegrees = Vec3(0.0f, 30.0f, 10.0f);
+  placement.translate = Vec3(1.0f, 2.0f, 3.0f);
+  const TransformedShape placed(
+      mapped(std::make_unique<Cylinder>(cylinder), Projection::Cylindrical),
+      worldFromObject(placement));
+  const Tessellation tessellation = tessellationOf(placed);
+  EXPECT_EQ(tessellation.triangles.size(), tessellationOf(cylinder).triangles.size());
+  ASSERT_NE(tessellation.projection, nullptr);
+  EXPECT_TRUE(tessellation.projectionPlacement == worldFromObject(placement));
+  EXPECT_EQ(tessellationOf(cylinder).projection, nullptr);
 }
 
 // A scene of one object, lit by ambient light alone so that the image is the

@@ -62,10 +62,10 @@ TEST(ImageTexture, MipmapLevelsAverageTheTexelsTheyCover) {
   for (int y = 0; y < 4; ++y)
     for (int x = 0; x < 4; ++x) board->at(x, y) = Color((x + y) % 2 == 0 ? 1.0f : 0.0f);
   const ImageTexture texture(board, TextureFilter::Trilinear);
-  ASSERT_EQ(texture.levels().size(), 3u);
-  EXPECT_EQ(texture.levels()[1].width(), 2);
-  EXPECT_EQ(texture.levels()[2].width(), 1);
-  expectColor(texture.levels()[2].at(0, 0), Color(0.5f));
+  ASSERT_EQ(texture.mipmap()->levels().size(), 3u);
+  EXPECT_EQ(texture.mipmap()->levels()[1].width(), 2);
+  EXPECT_EQ(texture.mipmap()->levels()[2].width(), 1);
+  expectColor(texture.mipmap()->levels()[2].at(0, 0), Color(0.5f));
   // A footprint of one texel reads level 0; of two, level 1; between, a blend.
   const Vec2 centreOfTexel(0.125f, 1.0f - 0.125f);
   const auto footprint = [](float width) {

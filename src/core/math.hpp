@@ -22,6 +22,12 @@ inline constexpr float kRayEpsilon = 1e-4f;
 
 inline float radians(float degrees) { return degrees * (kPi / 180.0f); }
 
+// The unit vector along v; zero for zero, which has no direction.
+inline Vec3 normalizedOrZero(const Vec3& v) {
+  const float length = glm::length(v);
+  return length > 0.0f ? v / length : Vec3(0.0f);
+}
+
 inline float maxComponent(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
 
 // The axis (0, 1 or 2) of the largest component, the first of equals.

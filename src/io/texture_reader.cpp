@@ -36,7 +36,9 @@ std::pair<Color, Color> readTwoColors(const CheckedMap& map, const std::string& 
 TextureFilter readTextureFilter(const Field& field) {
   return readChoice<TextureFilter>(field, {{"nearest", TextureFilter::Nearest},
                                            {"bilinear", TextureFilter::Bilinear},
-                                           {"trilinear", TextureFilter::Trilinear}});
+                                           {"trilinear", TextureFilter::Trilinear},
+                                           {"summed-area", TextureFilter::SummedArea},
+                                           {"elliptical", TextureFilter::EllipticalAverage}});
 }
 
 std::shared_ptr<const Texture> readImageTexture(const CheckedMap& map, const Field& image,

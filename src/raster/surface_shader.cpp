@@ -1,5 +1,6 @@
 #include "raster/surface_shader.hpp"
 
+#include "scene/shapes/vertex_attributes.hpp"
 #include "scene/textures/surface_mapping.hpp"
 
 namespace rise {
@@ -10,6 +11,22 @@ constexpr int kFront = 0;
 constexpr int kBack = 1;
 
 int sideSeen(const ScreenFace& face) { return face.frontFacing ? kFront : kBack; }
+
+// The unit normal of the plane of a face's corners, around which they wind
+// counter-clockwise.
+Vec3 planeNormal(const SurfaceVertex& a, const SurfaceVertex& b, const SurfaceVertex& c) {
+  return glm::normalize(glm::cross(b.position - a.position, c.position - a.position));
+}
+
+// Gouraud's weights of a face's corners: their barycentric coordinates
+// times the lengths of their normals (SurfaceVertex::normal), summing to 1.
+Vec3 gouraudWeights(const Vec3& weights, const std::array<const SurfaceVertex*, 3>& corners) {
+  Vec3 weighed = weights;
+  for (int corner = 0; corner < 3; ++corner)
+    weighed[corner] *= glm::length(corners[corner]->normal);
+  const float sum = weighed.x + weighed.y + weighed.z;
+  return sum > 0.0f ? weighed / sum : weights;
+}
 
 // A normal of the surface turned to the side the eye sees.
 Vec3 towardsEye(const Vec3& normal, int side) { return side == kFront ? normal : -normal; }
@@ -30,19 +47,19 @@ SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessell
 
 void SurfaceShader::lightFaces(const Workers& workers) {
   faceLight_.resize(screen_.faces.size());
-  workers.forEachRange(
-      static_cast<int>(faceLight_.size()), kItemsPerRange, [&](int, int begin, int end) {
-        for (int f = begin; f < end; ++f) {
-          const SceneFace& face = tessellated_.faces[screen_.faces[f].sceneFace];
-          const Vec3& a = tessellated_.vertices[face.vertices[0]].position;
-          const Vec3& b = tessellated_.vertices[face.vertices[1]].position;
-          const Vec3& c = tessellated_.vertices[face.vertices[2]].position;
-          const Vec3 normal = glm::normalize(glm::cross(b - a, c - a));
-          faceLight_[f] =
-              splitUnshadowedLight(scene_, scene_.materials[face.material], (a + b + c) / 3.0f,
-                                   towardsEye(normal, sideSeen(screen_.faces[f])), eye_);
-        }
-      });
+  workers.forEachRange(static_cast<int>(faceLight_.size()), kItemsPerRange,
+                       [&](int, int begin, int end) {
+                         for (int f = begin; f < end; ++f) {
+                           const SceneFace& face = tessellated_.faces[screen_.faces[f].sceneFace];
+                           const SurfaceVertex& a = tessellated_.vertices[face.vertices[0]];
+                           const SurfaceVertex& b = tessellated_.vertices[face.vertices[1]];
+                           const SurfaceVertex& c = tessellated_.vertices[face.vertices[2]];
+                           faceLight_[f] = splitUnshadowedLight(
+                               scene_, scene_.materials[face.material],
+                               (a.position + b.position + c.position) / 3.0f,
+                               towardsEye(planeNormal(a, b, c), sideSeen(screen_.faces[f])), eye_);
+                         }
+                       });
 }
 
 void SurfaceShader::lightVertices(const Workers& workers) {
@@ -66,7 +83,7 @@ void SurfaceShader::lightVertices(const Workers& workers) {
             const SurfaceVertex& vertex = tessellated_.vertices[v];
             vertexLight_[side][v] =
                 splitUnshadowedLight(scene_, scene_.materials[material[side][v]], vertex.position,
-                                     towardsEye(vertex.normal, side), eye_);
+                                     towardsEye(normalizedOrZero(vertex.normal), side), eye_);
           }
         });
   }
@@ -74,18 +91,24 @@ void SurfaceShader::lightVertices(const Workers& workers) {
 
 // How far the texture coordinates move from this pixel to the next across
 // and down, by the face's perspective-correct barycentric coordinates one
-// pixel away.
-PixelFootprint SurfaceShader::uvFootprint(int face, const Vec2& centre) const {
+// pixel away: the corners' coordinates interpolated there, or the shape's
+// projection at the points there.
+PixelFootprint SurfaceShader::uvFootprint(int face, const Vec2& centre,
+                                          const SurfacePoint& surface) const {
   const ScreenFace& screenFace = screen_.faces[face];
   const SceneFace& sceneFace = tessellated_.faces[screenFace.sceneFace];
-  const auto uvAt = [&](const Vec2& raster) {
+  const std::optional<PlacedProjection>& projection = tessellated_.projections[sceneFace.shape];
+  const auto stepTo = [&](const Vec2& raster) {
     const Vec3 weights = screenFace.barycentricAt(raster);
-    return weights.x * tessellated_.vertices[sceneFace.vertices[0]].uv +
-           weights.y * tessellated_.vertices[sceneFace.vertices[1]].uv +
-           weights.z * tessellated_.vertices[sceneFace.vertices[2]].uv;
+    const auto at = [&](auto member) {
+      return weights.x * tessellated_.vertices[sceneFace.vertices[0]].*member +
+             weights.y * tessellated_.vertices[sceneFace.vertices[1]].*member +
+             weights.z * tessellated_.vertices[sceneFace.vertices[2]].*member;
+    };
+    return projection ? projection->stepTo(surface, at(&SurfaceVertex::position))
+                      : at(&SurfaceVertex::uv) - surface.uv;
   };
-  const Vec2 here = uvAt(centre);
-  return {uvAt(centre + Vec2(1.0f, 0.0f)) - here, uvAt(centre + Vec2(0.0f, 1.0f)) - here};
+  return {stepTo(centre + Vec2(1.0f, 0.0f)), stepTo(centre + Vec2(0.0f, 1.0f))};
 }
 
 ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
@@ -95,13 +118,16 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
   const SurfaceVertex& a = tessellated_.vertices[sceneFace.vertices[0]];
   const SurfaceVertex& b = tessellated_.vertices[sceneFace.vertices[1]];
   const SurfaceVertex& c = tessellated_.vertices[sceneFace.vertices[2]];
-  SurfacePoint surface(
-      weights.x * a.position + weights.y * b.position + weights.z * c.position,
-      glm::normalize(weights.x * a.normal + weights.y * b.normal + weights.z * c.normal),
-      weights.x * a.uv + weights.y * b.uv + weights.z * c.uv);
+  SurfacePoint surface(weights.x * a.position + weights.y * b.position + weights.z * c.position,
+                       interpolatedNormal(planeNormal(a, b, c), a.normal, b.normal, c.normal,
+                                          Vec2(weights.y, weights.z)),
+                       weights.x * a.uv + weights.y * b.uv + weights.z * c.uv);
+
+  const std::optional<PlacedProjection>& projection = tessellated_.projections[sceneFace.shape];
+  if (projection) projection->mapOnto(surface);
 
   const Material& material = scene_.materials[sceneFace.material];
-  const SurfaceColors colors = surfaceColors(material, surface, uvFootprint(face, centre));
+  const SurfaceColors colors = surfaceColors(material, surface, uvFootprint(face, centre, surface));
   const int side = sideSeen(screenFace);
   Color color;
   switch (shading_) {
@@ -111,9 +137,10 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
     case Shading::Gouraud: {
       const std::vector<SplitLight>& lit = vertexLight_[side];
       const auto& [ia, ib, ic] = sceneFace.vertices;
+      const Vec3 w = gouraudWeights(weights, {&a, &b, &c});
       const SplitLight interpolated{
-          weights.x * lit[ia].byColor + weights.y * lit[ib].byColor + weights.z * lit[ic].byColor,
-          weights.x * lit[ia].byKs + weights.y * lit[ib].byKs + weights.z * lit[ic].byKs};
+          w.x * lit[ia].byColor + w.y * lit[ib].byColor + w.z * lit[ic].byColor,
+          w.x * lit[ia].byKs + w.y * lit[ib].byKs + w.z * lit[ic].byKs};
       color = interpolated.with(colors);
       break;
     }
@@ -121,8 +148,9 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
       // Bump and normal maps tilt the normal at every pixel, Phong shading
       // alone having a normal per pixel.
       if (material.bump || material.normalMap) {
-        triangleTangents(a.position, b.position, c.position, a.uv, b.uv, c.uv, surface.dpdu,
-                         surface.dpdv);
+        if (!projection)
+          triangleTangents(a.position, b.position, c.position, a.uv, b.uv, c.uv, surface.dpdu,
+                           surface.dpdv);
         surface.shadingNormal = shadingNormal(material, surface);
       }
       color = unshadowedLight(scene_, material, colors, surface.position,

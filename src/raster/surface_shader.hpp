@@ -41,7 +41,7 @@ class SurfaceShader {
   ShadedPixel shade(int face, const Vec2& centre) const;
 
  private:
-  PixelFootprint uvFootprint(int face, const Vec2& centre) const;
+  PixelFootprint uvFootprint(int face, const Vec2& centre, const SurfacePoint& surface) const;
   void lightFaces(const Workers& workers);
   void lightVertices(const Workers& workers);
 

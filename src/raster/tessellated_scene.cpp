@@ -10,6 +10,22 @@ bool contains(const Bounds3& box, const Vec3& point) {
 
 }  // namespace
 
+void PlacedProjection::mapOnto(SurfacePoint& surface) const {
+  SurfacePoint mapped = placement_.toObject(surface);
+  mapping_->mapOnto(mapped);
+  const SurfacePoint world = placement_.toWorld(mapped);
+  surface.uv = world.uv;
+  surface.dpdu = world.dpdu;
+  surface.dpdv = world.dpdv;
+}
+
+Vec2 PlacedProjection::stepTo(const SurfacePoint& surface, const Vec3& position) const {
+  SurfacePoint there = surface;
+  there.position = position;
+  const SurfacePoint object = placement_.toObject(there);
+  return mapping_->step(surface.uv, mapping_->uvAt(object.position, object.normal));
+}
+
 TessellatedScene tessellateScene(const Scene& scene, const TessellationSettings& settings) {
   TessellatedScene tessellated;
   for (std::size_t shape = 0; shape < scene.shapes.size(); ++shape) {
@@ -19,6 +35,10 @@ TessellatedScene tessellateScene(const Scene& scene, const TessellationSettings&
     // faces are the ones in view.
     const bool cullable =
         part.enclosesSolid && !contains(scene.shapes[shape]->bounds(), settings.viewpoint);
+    tessellated.projections.push_back(
+        part.projection ? std::optional<PlacedProjection>(std::in_place, *part.projection,
+                                                          part.projectionPlacement)
+                        : std::nullopt);
     const int firstVertex = static_cast<int>(tessellated.vertices.size());
     tessellated.vertices.insert(tessellated.vertices.end(), part.vertices.begin(),
                                 part.vertices.end());

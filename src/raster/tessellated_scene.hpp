@@ -4,10 +4,13 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "scene/scene.hpp"
 #include "scene/tessellation.hpp"
+#include "scene/textures/projected_mapping.hpp"
+#include "scene/transform.hpp"
 
 namespace rise {
 
@@ -20,9 +23,31 @@ struct SceneFace {
   bool cullable;
 };
 
+// A shape's projected mapping (Tessellation::projection), placed in the
+// world: the texture coordinates of each point seen on its facets come from
+// the point itself, as those of the ray tracer's hits do.
+class PlacedProjection {
+ public:
+  PlacedProjection(const ProjectedMapping& mapping, const Mat4& worldFromMapping)
+      : mapping_(&mapping), placement_(worldFromMapping) {}
+
+  // Sets the coordinates and tangents of a point of the facets, by its
+  // position and normal.
+  void mapOnto(SurfacePoint& surface) const;
+  // How far the coordinates move from those of `surface` to those of
+  // `position`, a nearby point of the same facet (one face of a box
+  // mapping): the short way around where u wraps.
+  Vec2 stepTo(const SurfacePoint& surface, const Vec3& position) const;
+
+ private:
+  const ProjectedMapping* mapping_;
+  AffineMap placement_;
+};
+
 struct TessellatedScene {
   std::vector<SurfaceVertex> vertices;
   std::vector<SceneFace> faces;
+  std::vector<std::optional<PlacedProjection>> projections;  // by shape
 };
 
 // Tessellates every shape of the scene; planes become squares centred under

@@ -31,6 +31,7 @@
 #include <optional>
 
 #include "ray/ray_tree_builder.hpp"
+#include "ray/shadow_terminator.hpp"
 #include "scene/light.hpp"
 #include "shading/phong.hpp"
 
@@ -133,13 +134,14 @@ class Recursion {
     Color color(0.0f);
     for (const auto& light : context_.scene.lights) {
       const LightSample sample = choices_.aimAt(*light, frame.surface.position, depth);
-      if (glm::dot(frame.normal, sample.toLight) <= 0.0f) continue;
+      const std::optional<Ray> shadow =
+          shadowRay(frame.surface, frame.normal, sample.toLight, frame.time);
+      if (!shadow) continue;
       ++counters_.shadowRays;
-      const Ray shadowRay = spawnRay(frame, sample.toLight);
-      const Color visible = context_.intersector.transmittance(shadowRay, 0.0f, sample.distance,
+      const Color visible = context_.intersector.transmittance(*shadow, 0.0f, sample.distance,
                                                                counters_.intersections);
       if (tree_)
-        tree_->shadow(shadowRay, *light, sample.distance, visible,
+        tree_->shadow(*shadow, *light, sample.distance, visible,
                       phongDirect(material, {colors.color, Color(0.0f)}, frame.shadingNormal,
                                   frame.toViewer, sample),
                       phongDirect(material, {Color(0.0f), colors.ks}, frame.shadingNormal,

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "core/bounds.hpp"
 #include "core/math.hpp"
@@ -33,6 +34,16 @@ struct Hit {
 // are how the position changes with the texture coordinates, the tangents
 // along which a bump map tilts the shading normal; zero where a surface has
 // no such mapping.
+// The flat triangle a point lies on and the normals its corners carry,
+// where the shading normal is interpolated between them (a smooth mesh): the
+// smooth surface those normals describe lies above the flat one, and a
+// shadow ray may leave from it (ray/shadow_terminator.hpp).
+struct NormalInterpolation {
+  std::array<Vec3, 3> corners;
+  std::array<Vec3, 3> normals;
+  Vec3 weights;  // the point's barycentric coordinates, corner by corner
+};
+
 struct SurfacePoint {
   SurfacePoint() = default;
   SurfacePoint(const Vec3& position, const Vec3& normal, const Vec2& uv = Vec2(0.0f))
@@ -44,6 +55,7 @@ struct SurfacePoint {
   Vec3 shadingNormal{0.0f};
   Vec3 dpdu{0.0f};
   Vec3 dpdv{0.0f};
+  std::optional<NormalInterpolation> interpolation;
 };
 
 // What intersecting costs, counted per ray and summed into the render's

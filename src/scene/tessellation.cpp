@@ -36,8 +36,9 @@ void tessellatePlaced(const Shape& shape, const Mat4& worldFromObject,
   const Mat3 normalToWorld = glm::transpose(glm::inverse(Mat3(worldFromObject)));
   for (SurfaceVertex& vertex : out.vertices) {
     vertex.position = Vec3(worldFromObject * glm::vec4(vertex.position, 1.0f));
-    vertex.normal = glm::normalize(normalToWorld * vertex.normal);
+    vertex.normal = glm::length(vertex.normal) * normalizedOrZero(normalToWorld * vertex.normal);
   }
+  out.projectionPlacement = worldFromObject * out.projectionPlacement;
   if (glm::determinant(Mat3(worldFromObject)) < 0.0f)
     for (auto& triangle : out.triangles) std::swap(triangle[1], triangle[2]);
 }

@@ -13,6 +13,7 @@
 
 namespace rise {
 
+class ProjectedMapping;
 class Shape;
 
 // How finely curved surfaces are cut by default: a circle into 32 segments.
@@ -40,7 +41,13 @@ struct TessellationSettings {
 // A point of a surface, as a corner of the triangles that cover it.
 struct SurfaceVertex {
   Vec3 position;
-  Vec3 normal;  // unit: the exact surface's normal, or a flat face's
+  // The exact surface's unit normal there, or a flat face's; but where the
+  // surface's normals converge to a point that has none of its own (a
+  // cone's apex), shorter, down to zero at the point: interpolation across
+  // a triangle weighs each corner's normal, and its colour in Gouraud
+  // shading, by its length, so that the other corners decide near that
+  // point.
+  Vec3 normal;
   Vec2 uv{0.0f};
 };
 
@@ -54,6 +61,13 @@ struct Tessellation {
   // be culled. Open surfaces (planes, polygons, most meshes) are seen from
   // both sides.
   bool enclosesSolid = false;
+  // The projected mapping the shape wears (shapes/mapped_shape.hpp), or
+  // none. A projection is not affine across a triangle: a renderer computes
+  // the texture coordinates at each point by it, as the ray tracer does at
+  // each hit, rather than interpolating the corners'. `projectionPlacement`
+  // takes the space the projection is made in to the triangles'.
+  const ProjectedMapping* projection = nullptr;
+  Mat4 projectionPlacement{1.0f};
 
   int addVertex(const SurfaceVertex& vertex);
   // A triangle; one with a repeated corner (a sphere's pole) is left out.

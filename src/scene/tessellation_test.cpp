@@ -13,7 +13,9 @@
 #include "scene/shapes/sphere.hpp"
 #include "scene/shapes/transformed_shape.hpp"
 #include "scene/shapes/triangle_mesh.hpp"
+#include "scene/shapes/vertex_attributes.hpp"
 #include "scene/transform.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {
@@ -43,6 +45,9 @@ void expectWoundAroundItsNormals(const Tessellation& tessellation) {
     const Vec3 winding = glm::cross(q.position - p.position, r.position - p.position);
     EXPECT_GT(glm::dot(winding, p.normal + q.normal + r.normal), 0.0f);
   }
+}
+
+void expectUnitNormals(const Tessellation& tessellation) {
   for (const SurfaceVertex& vertex : tessellation.vertices)
     EXPECT_NEAR(glm::length(vertex.normal), 1.0f, 1e-5f);
 }
@@ -63,6 +68,7 @@ TEST(Tessellation, PutsASpheresVerticesOnItWithItsNormals) {
   // 16 segments around, 8 rings: quads between the rings, triangles at the poles.
   EXPECT_EQ(sphere.triangles.size(), 16u * 6u * 2u + 2u * 16u);
   expectClosedSolid(sphere);
+  expectUnitNormals(sphere);
 }
 
 TEST(Tessellation, PutsACylindersVerticesOnItsSideAndCaps) {
@@ -75,6 +81,7 @@ TEST(Tessellation, PutsACylindersVerticesOnItsSideAndCaps) {
     EXPECT_TRUE(std::abs(along) < 1e-5f || std::abs(along - 2.0f) < 1e-5f);
   }
   expectClosedSolid(cylinder);
+  expectUnitNormals(cylinder);
 }
 
 TEST(Tessellation, PutsAConesVerticesOnItsSideAndBase) {
@@ -84,12 +91,44 @@ TEST(Tessellation, PutsAConesVerticesOnItsSideAndBase) {
     const float height = vertex.position.y;
     const float radius = std::hypot(vertex.position.x, vertex.position.z);
     EXPECT_NEAR(radius, 1.0f - 0.5f * height, 1e-5f);
-    // The side's normal leans up by atan(radius / height).
+    // The side's normal leans up by atan(radius / height); it weighs as
+    // much as the point is far from the axis, nothing at the apex.
     if (vertex.normal.y > 0.0f) {
-      EXPECT_NEAR(vertex.normal.y, 1.0f / std::sqrt(5.0f), 1e-5f);
+      EXPECT_NEAR(glm::normalize(vertex.normal).y, 1.0f / std::sqrt(5.0f), 1e-5f);
+      EXPECT_NEAR(glm::length(vertex.normal), radius, 1e-5f);
     }
   }
   expectClosedSolid(cone);
+}
+
+// Interpolated across any facet of the side, up to the apex, the corners'
+// normals give the cone's own normal along the line from the rim through
+// the point: the facets do not show.
+TEST(Tessellation, InterpolatesAConesNormalsAsTheConesOwn) {
+  const float radius = 0.8f, height = 1.5f;
+  const Tessellation cone =
+      tessellate(Cone(Vec3(0.0f), Vec3(0.0f, 1.0f, 0.0f), radius, height, 0), 2);
+  int sidePoints = 0;
+  for (const auto& [a, b, c] : cone.triangles) {
+    const SurfaceVertex& p = cone.vertices[a];
+    const SurfaceVertex& q = cone.vertices[b];
+    const SurfaceVertex& r = cone.vertices[c];
+    if (p.position.y == 0.0f && q.position.y == 0.0f && r.position.y == 0.0f) continue;  // base
+    for (const Vec2 barycentric : {Vec2(0.1f, 0.1f), Vec2(0.8f, 0.1f), Vec2(0.1f, 0.8f),
+                                   Vec2(0.45f, 0.45f), Vec2(0.02f, 0.03f), Vec2(0.97f, 0.01f)}) {
+      const Vec3 position = atBarycentric(p.position, q.position, r.position, barycentric);
+      const Vec3 flat =
+          glm::normalize(glm::cross(q.position - p.position, r.position - p.position));
+      const Vec3 normal = interpolatedNormal(flat, p.normal, q.normal, r.normal, barycentric);
+      const Vec3 across = glm::normalize(Vec3(position.x, 0.0f, position.z));
+      const Vec3 exact = glm::normalize(height * across + radius * Vec3(0.0f, 1.0f, 0.0f));
+      // The facet's chord is 8 segments a turn here: its points lie
+      // cos(pi / 8) as far from the axis as the cone's.
+      EXPECT_GT(glm::dot(normal, exact), std::cos(0.05f)) << shape_testing::text(position);
+      ++sidePoints;
+    }
+  }
+  EXPECT_GT(sidePoints, 0);
 }
 
 TEST(Tessellation, CoversABoxWithTwoTrianglesAFace) {
@@ -103,6 +142,7 @@ TEST(Tessellation, CoversABoxWithTwoTrianglesAFace) {
     EXPECT_EQ(vertex.position[axis], face);
   }
   expectClosedSolid(box);
+  expectUnitNormals(box);
 }
 
 // The square stands under the viewpoint, (3, 5, -7), whose foot on the plane
@@ -126,6 +166,7 @@ TEST(Tessellation, CentresAPlanesSquareUnderTheViewpoint) {
   EXPECT_EQ(high.y, 1.0f);
   EXPECT_FALSE(square.enclosesSolid);
   expectWoundAroundItsNormals(square);
+  expectUnitNormals(square);
 }
 
 TEST(Tessellation, FansAConvexPolygon) {
@@ -135,6 +176,7 @@ TEST(Tessellation, FansAConvexPolygon) {
   EXPECT_EQ(polygon.triangles.size(), 3u);
   EXPECT_FALSE(polygon.enclosesSolid);
   expectWoundAroundItsNormals(polygon);
+  expectUnitNormals(polygon);
 }
 
 TEST(Tessellation, KnowsWhichMeshesCloseAroundASolid) {
@@ -148,6 +190,22 @@ TEST(Tessellation, KnowsWhichMeshesCloseAroundASolid) {
   std::swap(inconsistent[3][0], inconsistent[3][1]);
   EXPECT_FALSE(tessellate(TriangleMesh(corners, inconsistent, 0)).enclosesSolid);
   expectWoundAroundItsNormals(tessellate(TriangleMesh(corners, tetrahedron, 0)));
+  expectUnitNormals(tessellate(TriangleMesh(corners, tetrahedron, 0)));
+}
+
+// Placed by a transform that stretches it, a cone keeps its normals'
+// lengths, their weights, while their directions turn.
+TEST(Tessellation, KeepsTheWeightsOfAConesNormalsThroughATransform) {
+  const Cone cone(Vec3(0.0f), Vec3(0.0f, 1.0f, 0.0f), 1.0f, 2.0f, 0);
+  TransformSpec stretch;
+  stretch.scale = Vec3(3.0f, 1.0f, 0.5f);
+  const Tessellation alone = tessellate(cone);
+  const Tessellation placed =
+      tessellate(TransformedShape(std::make_unique<Cone>(cone), worldFromObject(stretch)));
+  ASSERT_EQ(alone.vertices.size(), placed.vertices.size());
+  for (std::size_t i = 0; i < alone.vertices.size(); ++i)
+    EXPECT_NEAR(glm::length(placed.vertices[i].normal), glm::length(alone.vertices[i].normal),
+                1e-5f);
 }
 
 // A mirroring transform turns the winding around; the tessellation turns it
@@ -163,6 +221,7 @@ TEST(Tessellation, KeepsTheWindingThroughAMirroringTransform) {
   for (const SurfaceVertex& vertex : placed.vertices)
     EXPECT_GT(glm::dot(vertex.normal, vertex.position - Vec3(-1.0f, 3.0f, 0.0f)), 0.0f);
   expectClosedSolid(placed);
+  expectUnitNormals(placed);
 }
 
 }  // namespace

@@ -20,6 +20,29 @@ TransformSpec interpolate(const TransformSpec& from, const TransformSpec& to, fl
           glm::mix(from.translate, to.translate, time)};
 }
 
+namespace {
+
+// A point of a surface carried by a map: points by it, directions along
+// the surface by its linear part, normals by `normalMap`.
+SurfacePoint moved(SurfacePoint surface, const Mat4& pointMap, const Mat3& normalMap) {
+  const auto point = [&](const Vec3& p) { return Vec3(pointMap * glm::vec4(p, 1.0f)); };
+  surface.position = point(surface.position);
+  surface.normal = glm::normalize(normalMap * surface.normal);
+  surface.shadingNormal = glm::normalize(normalMap * surface.shadingNormal);
+  surface.dpdu = Mat3(pointMap) * surface.dpdu;
+  surface.dpdv = Mat3(pointMap) * surface.dpdv;
+  if (surface.interpolation) {
+    for (int corner = 0; corner < 3; ++corner) {
+      surface.interpolation->corners[corner] = point(surface.interpolation->corners[corner]);
+      surface.interpolation->normals[corner] =
+          normalizedOrZero(normalMap * surface.interpolation->normals[corner]);
+    }
+  }
+  return surface;
+}
+
+}  // namespace
+
 AffineMap::AffineMap(const Mat4& worldFromObject)
     : worldFromObject_(worldFromObject),
       objectFromWorld_(glm::inverse(worldFromObject)),
@@ -31,13 +54,12 @@ Ray AffineMap::toObject(const Ray& worldRay) const {
 }
 
 SurfacePoint AffineMap::toWorld(const SurfacePoint& object) const {
-  SurfacePoint world = object;
-  world.position = pointToWorld(object.position);
-  world.normal = glm::normalize(normalToWorld_ * object.normal);
-  world.shadingNormal = glm::normalize(normalToWorld_ * object.shadingNormal);
-  world.dpdu = Mat3(worldFromObject_) * object.dpdu;
-  world.dpdv = Mat3(worldFromObject_) * object.dpdv;
-  return world;
+  return moved(object, worldFromObject_, normalToWorld_);
+}
+
+// Normals go back by the transpose of the inverse's inverse transpose.
+SurfacePoint AffineMap::toObject(const SurfacePoint& world) const {
+  return moved(world, objectFromWorld_, glm::transpose(Mat3(worldFromObject_)));
 }
 
 Vec3 AffineMap::pointToWorld(const Vec3& point) const {

@@ -35,6 +35,8 @@ class AffineMap {
   // means the same in both spaces.
   Ray toObject(const Ray& worldRay) const;
   SurfacePoint toWorld(const SurfacePoint& object) const;
+  // A point of the surface and its normals in object space.
+  SurfacePoint toObject(const SurfacePoint& world) const;
   Vec3 pointToWorld(const Vec3& point) const;
   // The box around the image of a box: an affine map takes a box to a
   // parallelepiped, which lies inside the box around its eight corners.

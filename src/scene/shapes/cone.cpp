@@ -1,6 +1,7 @@
 #include "scene/shapes/cone.hpp"
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 #include "scene/shapes/disk.hpp"
@@ -89,30 +90,45 @@ Bounds3 Cone::bounds() const {
   return box;
 }
 
-// Triangles from the base circle to the apex, and the base cap. The apex has
-// no normal of its own: each triangle's apex corner takes the side's normal
-// halfway across the triangle.
+// The side as quadrilaterals between rings around the axis, the last ring
+// joined to the apex by triangles, and the base cap. The rings are there for
+// Gouraud shading, whose colours are computed at the vertices alone: the
+// light changes along the slant too. The side's normal is the same all along
+// each line from the rim to the apex, and every normal of the side meets at
+// the apex, which has none of its own. So the side's vertices weigh their
+// normals by their distance from the axis, down to nothing at the apex
+// (SurfaceVertex::normal): interpolated across a facet, the normal is then
+// that of the line from the rim through the point, as on the cone itself.
 void Cone::tessellate(const TessellationSettings& settings, Tessellation& out) const {
   // Across the slant (apex - rim) and around the axis, out of the cone.
   const auto sideNormal = [&](const Vec3& direction) {
     return glm::normalize(height_ * direction + radius_ * axis_);
   };
   const int segments = segmentsPerTurn(settings.level);
+  const int rings = std::max(1, settings.level / 2);
   const std::vector<Vec3> around = directionsAround(axis_, segments);
-  const auto uAt = [segments](int k, float fraction) {
-    return turnAtStep(static_cast<float>(k) + fraction, segments);
-  };
+  // ring[j][k]: ring j, from the rim (0) up, at the k-th direction around.
+  std::vector<std::vector<int>> ring(rings);
+  for (int j = 0; j < rings; ++j) {
+    const float up = static_cast<float>(j) / static_cast<float>(rings);
+    for (int k = 0; k <= segments; ++k) {
+      const Vec3& direction = around[k % segments];
+      const Vec3 position = base_ + up * height_ * axis_ + (1.0f - up) * radius_ * direction;
+      const Vec2 uv(turnAtStep(static_cast<float>(k), segments), up);
+      ring[j].push_back(out.addVertex({position, (1.0f - up) * sideNormal(direction), uv}));
+    }
+  }
+  for (int k = 0; k < segments; ++k) {
+    for (int j = 0; j + 1 < rings; ++j)
+      out.addConvexPolygon(
+          std::array{ring[j][k], ring[j][k + 1], ring[j + 1][k + 1], ring[j + 1][k]});
+    const Vec2 apexUv(turnAtStep(static_cast<float>(k) + 0.5f, segments), 1.0f);
+    out.addTriangle(ring[rings - 1][k], ring[rings - 1][k + 1],
+                    out.addVertex({apex_, Vec3(0.0f), apexUv}));
+  }
   std::vector<int> cap;
   for (int k = 0; k < segments; ++k) {
-    const Vec3& direction = around[k];
-    const Vec3& nextDirection = around[(k + 1) % segments];
-    const Vec3 atRim = base_ + radius_ * direction;
-    const int rim = out.addVertex({atRim, sideNormal(direction), {uAt(k, 0.0f), 0.0f}});
-    const int nextRim = out.addVertex(
-        {base_ + radius_ * nextDirection, sideNormal(nextDirection), {uAt(k, 1.0f), 0.0f}});
-    const int apex = out.addVertex(
-        {apex_, sideNormal(glm::normalize(direction + nextDirection)), {uAt(k, 0.5f), 1.0f}});
-    out.addTriangle(rim, nextRim, apex);
+    const Vec3 atRim = base_ + radius_ * around[k];
     cap.push_back(out.addVertex({atRim, -axis_, diskUv(atRim, base_, -axis_, radius_)}));
   }
   // The cap faces down the axis: its corners turn clockwise around it.

@@ -37,6 +37,8 @@ SurfacePoint KeyframedMesh::pointOn(int triangle, float time, const Vec2& baryce
     };
     surface.shadingNormal =
         interpolatedNormal(surface.normal, normalAt(a), normalAt(b), normalAt(c), barycentric);
+    surface.interpolation =
+        normalInterpolation({v0, v1, v2}, {normalAt(a), normalAt(b), normalAt(c)}, barycentric);
   }
   if (!start_.uvs.empty()) {
     surface.uv = atBarycentric(start_.uvs[a], start_.uvs[b], start_.uvs[c], barycentric);

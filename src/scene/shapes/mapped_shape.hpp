@@ -12,8 +12,8 @@ namespace rise {
 // the shape in the shape's own space, inside the TransformedShape that
 // places it, so that the texture moves with the object. Rays meet the shape
 // inside as they would; surfaceAt gives the mapping's coordinates and
-// tangents at the point, and tessellate the mapping's coordinates at the
-// vertices, each triangle mapped as a whole (ProjectedMapping::cornerUvs).
+// tangents at the point, and the tessellation carries the mapping itself
+// (Tessellation::projection), its vertices the coordinates there.
 class MappedShape final : public Shape {
  public:
   MappedShape(std::unique_ptr<Shape> shape, const Mapping& mapping);
@@ -22,11 +22,6 @@ class MappedShape final : public Shape {
                  IntersectionCounters& counters) const override;
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
   Bounds3 bounds() const override;
-  // A mapping that turns around an axis is not affine across a triangle:
-  // where the shape's triangles are longer than a segment of the circle
-  // around the box at this level (the sides of a box, a cylinder's height),
-  // each is cut into smaller ones, all by the same number so that
-  // neighbours still share their edges' vertices.
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
 
   int primitiveCount() const override;

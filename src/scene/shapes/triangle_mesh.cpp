@@ -37,9 +37,13 @@ bool TriangleMesh::intersect(const Ray& ray, float tMin, Hit& hit,
 SurfacePoint TriangleMesh::surfaceAt(const Ray& ray, const Hit& hit) const {
   const auto& [a, b, c] = triangles_[hit.primitive];
   SurfacePoint surface(ray.at(hit.t), windingNormal(vertices_[a], vertices_[b], vertices_[c]));
-  if (!normals_.empty())
+  if (!normals_.empty()) {
     surface.shadingNormal =
         interpolatedNormal(surface.normal, normals_[a], normals_[b], normals_[c], hit.barycentric);
+    surface.interpolation =
+        normalInterpolation({vertices_[a], vertices_[b], vertices_[c]},
+                            {normals_[a], normals_[b], normals_[c]}, hit.barycentric);
+  }
   if (!uvs_.empty()) {
     surface.uv = atBarycentric(uvs_[a], uvs_[b], uvs_[c], hit.barycentric);
     triangleTangents(vertices_[a], vertices_[b], vertices_[c], uvs_[a], uvs_[b], uvs_[c],

@@ -2,7 +2,10 @@
 // interpolated across it with the barycentric coordinates of a hit.
 #pragma once
 
+#include <array>
+
 #include "core/math.hpp"
+#include "scene/shape.hpp"
 
 namespace rise {
 
@@ -24,6 +27,15 @@ inline Vec3 interpolatedNormal(const Vec3& geometricNormal, const Vec3& n0, cons
   const float length = glm::length(blend);
   if (!(length > 1e-6f) || glm::dot(blend, geometricNormal) <= 0.0f) return geometricNormal;
   return blend / length;
+}
+
+// What Phong's interpolation worked from at the point of barycentric
+// coordinates (u, v) of a triangle (shape.hpp).
+inline NormalInterpolation normalInterpolation(const std::array<Vec3, 3>& corners,
+                                               const std::array<Vec3, 3>& normals,
+                                               const Vec2& barycentric) {
+  return {corners, normals,
+          Vec3(1.0f - barycentric.x - barycentric.y, barycentric.x, barycentric.y)};
 }
 
 }  // namespace rise

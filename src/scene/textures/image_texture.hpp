@@ -4,20 +4,24 @@
 #pragma once
 
 #include <memory>
-#include <vector>
+#include <optional>
 
 #include "core/image.hpp"
+#include "scene/textures/mipmap.hpp"
+#include "scene/textures/summed_area_table.hpp"
 #include "scene/textures/texture.hpp"
 
 namespace rise {
 
-// How a texture between its texels is sampled: the nearest texel, or the
-// four around the point weighted by their nearness (bilinear); trilinear
-// also blends between the two levels of a mipmap (L. Williams, "Pyramidal
-// Parametrics", SIGGRAPH 1983) whose texels are the size of the pixel's
-// footprint, where an algorithm gives one (the visible-surface algorithms),
-// and is bilinear otherwise.
-enum class TextureFilter { Nearest, Bilinear, Trilinear };
+// How a texture is read between and over its texels: the nearest texel, or
+// the four around the point weighted by their nearness (bilinear); or, over
+// a pixel's footprint where an algorithm gives one (the visible-surface
+// algorithms), the classic answers to minification: a mipmap read
+// trilinearly (mipmap.hpp), the mean over the footprint's bounding rectangle
+// from a summed-area table (summed_area_table.hpp), or an elliptical weighted
+// average over a mipmap (mipmap.hpp). Without a footprint these read
+// bilinearly.
+enum class TextureFilter { Nearest, Bilinear, Trilinear, SummedArea, EllipticalAverage };
 
 class ImageTexture final : public Texture {
  public:
@@ -27,16 +31,18 @@ class ImageTexture final : public Texture {
   Color colorOverFootprint(const SurfacePoint& surface,
                            const PixelFootprint& footprint) const override;
   Color colorAtUv(const Vec2& uv) const;
-  // Over a pixel's footprint: trilinear only.
   Color colorAtUv(const Vec2& uv, const PixelFootprint& footprint) const;
 
-  // The mipmap: the image, then each level half the one before (a box
-  // filter over 2 x 2 texels), down to a single texel.
-  const std::vector<Image>& levels() const { return levels_; }
+  // The mipmap, for the filters that read one.
+  const std::optional<MipMap>& mipmap() const { return mipmap_; }
 
  private:
-  std::vector<Image> levels_;
+  Color meanOverBoundingRectangle(const Vec2& uv, const PixelFootprint& footprint) const;
+
+  std::shared_ptr<const Image> image_;
   TextureFilter filter_;
+  std::optional<MipMap> mipmap_;
+  std::optional<SummedAreaTable> sums_;
 };
 
 }  // namespace rise

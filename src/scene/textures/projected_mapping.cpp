@@ -1,6 +1,7 @@
 #include "scene/textures/projected_mapping.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "scene/textures/surface_mapping.hpp"
@@ -75,9 +76,12 @@ Vec2 ProjectedMapping::uvAt(const Vec3& position, const Vec3& normal) const {
     const float distance = glm::length(fromCentre);
     return distance > 0.0f ? sphericalUv(axis, fromCentre / distance) : Vec2(0.0f, 0.5f);
   }
+  // The flat ends of the box lie at v = 0 and 1 exactly, where rounding
+  // would otherwise scatter points of a flat top past 1, to the repeated
+  // texture's bottom row.
   if (mapping_.projection == Projection::Cylindrical)
     return {turnAroundAxis(axis, fromCentre),
-            0.5f + glm::dot(fromCentre, axis) / (2.0f * halfHeight_)};
+            std::clamp(0.5f + glm::dot(fromCentre, axis) / (2.0f * halfHeight_), 0.0f, 1.0f)};
   return cubeFaceUv(position, faceProjectedFrom(normal), bounds_.min, bounds_.max);
 }
 
@@ -96,6 +100,17 @@ void ProjectedMapping::tangentsAt(const Vec3& position, const Vec3& normal, Vec3
     cubeFaceTangents(faceProjectedFrom(normal), bounds_.min, bounds_.max, alongU, alongV);
   }
   projectedTangents(normal, alongU, alongV, dpdu, dpdv);
+}
+
+void ProjectedMapping::mapOnto(SurfacePoint& surface) const {
+  surface.uv = uvAt(surface.position, surface.normal);
+  tangentsAt(surface.position, surface.normal, surface.dpdu, surface.dpdv);
+}
+
+Vec2 ProjectedMapping::step(const Vec2& from, const Vec2& to) const {
+  Vec2 difference = to - from;
+  if (turns()) difference.x -= std::round(difference.x);
+  return difference;
 }
 
 bool ProjectedMapping::isOnAxis(const Vec3& position) const {

@@ -22,6 +22,7 @@
 
 #include "core/bounds.hpp"
 #include "core/math.hpp"
+#include "scene/shape.hpp"
 
 namespace rise {
 
@@ -44,6 +45,11 @@ class ProjectedMapping {
   Vec2 uvAt(const Vec3& position, const Vec3& normal) const;
   // dP/du and dP/dv along the surface at that point.
   void tangentsAt(const Vec3& position, const Vec3& normal, Vec3& dpdu, Vec3& dpdv) const;
+  // Both, at the point of `surface` with its normal.
+  void mapOnto(SurfacePoint& surface) const;
+  // How far the coordinates move from `from` to `to` at a nearby point: the
+  // short way around where u wraps.
+  Vec2 step(const Vec2& from, const Vec2& to) const;
 
   // The coordinates of the corners of a flat triangle (counter-clockwise
   // around its outward normal), which a renderer interpolates across it: all
