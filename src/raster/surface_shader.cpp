@@ -18,12 +18,14 @@ Vec3 towardsEye(const Vec3& normal, int side) { return side == kFront ? normal :
 
 SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessellated,
                              const ScreenGeometry& screen, const ViewProjection& view,
-                             Shading shading, const Workers& workers)
+                             Shading shading, const Workers& workers,
+                             const LightVisibility* shadows)
     : scene_(scene),
       tessellated_(tessellated),
       screen_(screen),
       eye_(view.eye()),
-      shading_(shading) {
+      shading_(shading),
+      shadows_(shadows) {
   if (shading_ == Shading::Flat) lightFaces(workers);
   if (shading_ == Shading::Gouraud) lightVertices(workers);
 }
@@ -39,8 +41,8 @@ void SurfaceShader::lightFaces(const Workers& workers) {
           const Vec3& c = tessellated_.vertices[face.vertices[2]].position;
           const Vec3 normal = glm::normalize(glm::cross(b - a, c - a));
           faceLight_[f] =
-              splitUnshadowedLight(scene_, scene_.materials[face.material], (a + b + c) / 3.0f,
-                                   towardsEye(normal, sideSeen(screen_.faces[f])), eye_);
+              splitLocalLight(scene_, scene_.materials[face.material], (a + b + c) / 3.0f,
+                              towardsEye(normal, sideSeen(screen_.faces[f])), eye_, shadows_);
         }
       });
 }
@@ -65,8 +67,8 @@ void SurfaceShader::lightVertices(const Workers& workers) {
             if (material[side][v] < 0) continue;
             const SurfaceVertex& vertex = tessellated_.vertices[v];
             vertexLight_[side][v] =
-                splitUnshadowedLight(scene_, scene_.materials[material[side][v]], vertex.position,
-                                     towardsEye(vertex.normal, side), eye_);
+                splitLocalLight(scene_, scene_.materials[material[side][v]], vertex.position,
+                                towardsEye(vertex.normal, side), eye_, shadows_);
           }
         });
   }
@@ -125,9 +127,9 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
                          surface.dpdv);
         surface.shadingNormal = shadingNormal(material, surface);
       }
-      color = unshadowedLight(scene_, material, colors, surface.position,
-                              towardsEye(surface.normal, side),
-                              towardsEye(surface.shadingNormal, side), eye_);
+      color =
+          localLight(scene_, material, colors, surface.position, towardsEye(surface.normal, side),
+                     towardsEye(surface.shadingNormal, side), eye_, shadows_);
       break;
   }
   return {color, glm::length(surface.position - eye_), surface.normal};

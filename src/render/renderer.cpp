@@ -24,6 +24,8 @@ std::string_view toString(Option option) {
       return "tessellation";
     case Option::PlaneSize:
       return "plane-size";
+    case Option::Shadows:
+      return "shadows";
     case Option::Accel:
       return "accel";
     case Option::MaxDepth:
