@@ -42,6 +42,9 @@ class SurfaceShader {
 
   // The screen face `face` seen at the raster point `centre`.
   ShadedPixel shade(int face, const Vec2& centre) const;
+  const Material& materialOf(int face) const {
+    return scene_.materials[tessellated_.faces[screen_.faces[face].sceneFace].material];
+  }
 
  private:
   PixelFootprint uvFootprint(int face, const Vec2& centre) const;

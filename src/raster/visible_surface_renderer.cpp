@@ -26,7 +26,10 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
 }  // namespace
 
 AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
-                                             std::string_view citation) {
+                                             std::string_view citation,
+                                             std::vector<Effect> ownEffects) {
+  std::vector<Effect> effects = {Effect::Shadows, Effect::DepthOfField, Effect::MotionBlur};
+  effects.insert(effects.end(), ownEffects.begin(), ownEffects.end());
   return {
       name,
       summary,
@@ -34,7 +37,7 @@ AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_
       Family::VisibleSurface,
       {"depth", "normal", "cost", "face", "shadow-map"},
       {Option::Shading, Option::Culling, Option::Tessellation, Option::PlaneSize, Option::Shadows},
-      {Effect::Shadows, Effect::DepthOfField, Effect::MotionBlur}};
+      std::move(effects)};
 }
 
 TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& settings,

@@ -50,6 +50,8 @@ std::string_view toString(Effect effect) {
       return "soft shadows";
     case Effect::Gloss:
       return "gloss";
+    case Effect::Transparency:
+      return "transparency";
   }
   return "?";
 }

@@ -56,6 +56,7 @@ enum class Effect {
   MotionBlur,
   SoftShadows,
   Gloss,
+  Transparency,  // transparent surfaces blended over what is behind them, without refraction
 };
 
 std::string_view toString(Family family);
