@@ -66,6 +66,10 @@ int render(const RenderOptions& options, const CLI::App& command) {
                 << "' buffer; it has: " << joined(algorithm.buffers) << "\n";
       return kExitBadInput;
     }
+    if (name == "shadow-map" && options.settings.request.settings.shadows != ShadowMethod::Map) {
+      std::cerr << "rise: --aov shadow-map: there is no shadow map without --shadows map\n";
+      return kExitBadInput;
+    }
   }
   std::variant<Job, int> prepared = prepare(options.settings);
   if (const int* status = std::get_if<int>(&prepared)) return *status;

@@ -19,6 +19,27 @@ std::map<std::string, Accel> accelNames() {
   return names;
 }
 
+void addShadowOptions(CLI::App& command, RenderSettings& settings) {
+  command
+      .add_option("--shadows", settings.shadows,
+                  "Visible-surface algorithms' shadows: none (default) or map")
+      ->transform(
+          choices<ShadowMethod>({{"none", ShadowMethod::None}, {"map", ShadowMethod::Map}}));
+  command.add_option("--shadow-map-size", settings.shadowMapSize, "Shadow maps: texels a side")
+      ->capture_default_str()
+      ->check(CLI::Range(16, 8192));
+  command
+      .add_option("--shadow-bias", settings.shadowBias,
+                  "Shadow maps: the bias in texels, scaled by the surface's slope")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0f, 1000.0f));
+  command
+      .add_option("--shadow-filter", settings.shadowFilter,
+                  "Shadow maps: percentage-closer filtering over (2 R + 1)^2 texels; 0: none")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 16));
+}
+
 }  // namespace
 
 void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
@@ -80,6 +101,7 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
                   "Visible-surface algorithms: the side of the square drawn for a plane")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  addShadowOptions(command, settings);
 }
 
 Scene loadScene(const std::string& path) {

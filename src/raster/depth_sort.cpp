@@ -23,7 +23,8 @@
 // Depths are inverse depths w = 1 / n, and a plane's sides are tested in
 // screen space (x, y, w), where planes stay planes. Painting is by the top-left
 // fill rule, in bands of scanlines that threads paint in parallel, each in the
-// painting order. Cost of a pixel: the times it was painted.
+// painting order; a transparent piece is blended over what is painted before
+// it (raster/transparency.hpp). Cost of a pixel: the times it was painted.
 #include "raster/depth_sort.hpp"
 
 #include <algorithm>
@@ -39,6 +40,7 @@
 #include "raster/polygon_clipping.hpp"
 #include "raster/polygon_coverage.hpp"
 #include "raster/polygon_relations.hpp"
+#include "raster/transparency.hpp"
 #include "raster/waiting_list.hpp"
 
 namespace rise {
@@ -49,7 +51,8 @@ const AlgorithmDescription& DepthSortRenderer::description() const {
       "Newell, Newell and Sancha's depth sort: paint back to front, split what cannot "
       "be sorted",
       "M. E. Newell, R. G. Newell, T. L. Sancha, A solution to the hidden surface "
-      "problem, Proceedings of the ACM National Conference, 1972");
+      "problem, Proceedings of the ACM National Conference, 1972",
+      {Effect::Transparency});
   return description;
 }
 
@@ -295,10 +298,7 @@ Step paintStep(const ScreenGeometry& pieces, int piece, const RasterFrame& frame
 void paintBand(const ScreenGeometry& pieces, const PixelRect& band, std::span<const int> order,
                std::span<const std::int64_t> stepOf, RasterFrame& frame,
                std::uint64_t& pixelsWritten) {
-  std::vector<int> faces(static_cast<std::size_t>(band.width()) * band.height(), -1);
-  const auto at = [&](int x, int y) -> int& {
-    return faces[static_cast<std::size_t>(y - band.y0) * band.width() + x - band.x0];
-  };
+  PaintedLayers painted(band);
   StepRecorder* const steps = frame.steps();
   PolygonCoverage coverage;
   for (int piece : order) {
@@ -306,17 +306,19 @@ void paintBand(const ScreenGeometry& pieces, const PixelRect& band, std::span<co
     Step step;
     if (steps) step = paintStep(pieces, piece, frame);
     coverage.reset(pieces.cornersOf(polygon));
+    const bool transparent = frame.isTransparent(polygon.face);
     coverage.forEachPixel(band, [&](int x, int y) {
-      at(x, y) = polygon.face;
+      painted.paint(x, y, polygon.face, transparent);
       frame.addCost(x, y, 1.0f);
-      if (steps) step.writes.push_back(frame.writeOf(x, y, polygon.face, 0.0f));
+      if (steps) {
+        step.writes.push_back(frame.writeOf(x, y, polygon.face, 0.0f));
+        if (transparent) step.writes.back().color = painted.shownAt(frame, x, y);
+      }
       ++pixelsWritten;
     });
     if (steps) steps->record(std::move(step), stepOf[piece], band.y0);
   }
-  for (int y = band.y0; y < band.y1; ++y)
-    for (int x = band.x0; x < band.x1; ++x)
-      if (at(x, y) >= 0) frame.setVisible(x, y, at(x, y));
+  painted.show(frame);
 }
 
 }  // namespace

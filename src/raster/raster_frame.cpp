@@ -7,7 +7,7 @@ namespace rise {
 RasterFrame::RasterFrame(int width, int height, const Color& background,
                          const ScreenGeometry& screen, const SurfaceShader& shader,
                          const Workers& workers, StepRecorder* steps)
-    : screen_(screen), shader_(shader), steps_(steps) {
+    : screen_(screen), shader_(shader), steps_(steps), background_(background) {
   // Filling five image-sized buffers is a fair share of a frame of a large
   // image: the render's workers share it.
   const std::array<Color, 5> fills = {background, Color(kInfinity), Color(0.0f), Color(-1.0f),
@@ -30,6 +30,21 @@ void RasterFrame::setVisible(int x, int y, int face) {
   depth_->at(x, y) = Color(pixel.depth);
   normal_->at(x, y) = pixel.normal;
   face_->at(x, y) = Color(static_cast<float>(screen_.faces[face].sceneFace));
+}
+
+void RasterFrame::blendVisible(int x, int y, int face) {
+  const Color behind = result_.image.at(x, y);
+  setVisible(x, y, face);
+  result_.image.at(x, y) += filterOf(face) * behind;
+}
+
+Color RasterFrame::blendedOver(int x, int y, int face, const Color& behind) const {
+  return writeOf(x, y, face, 0.0f).color + filterOf(face) * behind;
+}
+
+Color RasterFrame::filterOf(int face) const {
+  const Material& material = shader_.materialOf(face);
+  return material.transmission * material.color;
 }
 
 PixelWrite RasterFrame::writeOf(int x, int y, int face, float inverseDepth, bool kept) const {

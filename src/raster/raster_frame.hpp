@@ -24,6 +24,14 @@ class RasterFrame {
 
   // Screen face `face` is seen at pixel (x, y).
   void setVisible(int x, int y, int face);
+  // Screen face `face`, transparent, is seen at pixel (x, y) over what the
+  // pixel shows: its own light, plus what is behind filtered by its
+  // transmission times its colour (raster/transparency.hpp).
+  void blendVisible(int x, int y, int face);
+  bool isTransparent(int face) const { return shader_.materialOf(face).isTransparent(); }
+  // The colour of transparent face `face` at (x, y) over `behind`.
+  Color blendedOver(int x, int y, int face, const Color& behind) const;
+  const Color& background() const { return background_; }
   void addCost(int x, int y, float work) { cost_->at(x, y) += Color(work); }
 
   // Where the algorithm reports its steps, or nullptr when nobody listens.
@@ -44,9 +52,13 @@ class RasterFrame {
   RenderResult takeResult() { return std::move(result_); }
 
  private:
+  // What a transparent face lets through: its transmission times its colour.
+  Color filterOf(int face) const;
+
   const ScreenGeometry& screen_;
   const SurfaceShader& shader_;
   StepRecorder* steps_;
+  Color background_;
   RenderResult result_;
   Image* depth_;
   Image* normal_;

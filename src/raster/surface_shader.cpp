@@ -35,31 +35,33 @@ Vec3 towardsEye(const Vec3& normal, int side) { return side == kFront ? normal :
 
 SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessellated,
                              const ScreenGeometry& screen, const ViewProjection& view,
-                             Shading shading, const Workers& workers)
+                             Shading shading, const Workers& workers,
+                             const LightVisibility* shadows)
     : scene_(scene),
       tessellated_(tessellated),
       screen_(screen),
       eye_(view.eye()),
-      shading_(shading) {
+      shading_(shading),
+      shadows_(shadows) {
   if (shading_ == Shading::Flat) lightFaces(workers);
   if (shading_ == Shading::Gouraud) lightVertices(workers);
 }
 
 void SurfaceShader::lightFaces(const Workers& workers) {
   faceLight_.resize(screen_.faces.size());
-  workers.forEachRange(static_cast<int>(faceLight_.size()), kItemsPerRange,
-                       [&](int, int begin, int end) {
-                         for (int f = begin; f < end; ++f) {
-                           const SceneFace& face = tessellated_.faces[screen_.faces[f].sceneFace];
-                           const SurfaceVertex& a = tessellated_.vertices[face.vertices[0]];
-                           const SurfaceVertex& b = tessellated_.vertices[face.vertices[1]];
-                           const SurfaceVertex& c = tessellated_.vertices[face.vertices[2]];
-                           faceLight_[f] = splitUnshadowedLight(
-                               scene_, scene_.materials[face.material],
-                               (a.position + b.position + c.position) / 3.0f,
-                               towardsEye(planeNormal(a, b, c), sideSeen(screen_.faces[f])), eye_);
-                         }
-                       });
+  workers.forEachRange(
+      static_cast<int>(faceLight_.size()), kItemsPerRange, [&](int, int begin, int end) {
+        for (int f = begin; f < end; ++f) {
+          const SceneFace& face = tessellated_.faces[screen_.faces[f].sceneFace];
+          const SurfaceVertex& a = tessellated_.vertices[face.vertices[0]];
+          const SurfaceVertex& b = tessellated_.vertices[face.vertices[1]];
+          const SurfaceVertex& c = tessellated_.vertices[face.vertices[2]];
+          faceLight_[f] = splitLocalLight(
+              scene_, scene_.materials[face.material],
+              (a.position + b.position + c.position) / 3.0f,
+              towardsEye(planeNormal(a, b, c), sideSeen(screen_.faces[f])), eye_, shadows_);
+        }
+      });
 }
 
 void SurfaceShader::lightVertices(const Workers& workers) {
@@ -82,8 +84,8 @@ void SurfaceShader::lightVertices(const Workers& workers) {
             if (material[side][v] < 0) continue;
             const SurfaceVertex& vertex = tessellated_.vertices[v];
             vertexLight_[side][v] =
-                splitUnshadowedLight(scene_, scene_.materials[material[side][v]], vertex.position,
-                                     towardsEye(normalizedOrZero(vertex.normal), side), eye_);
+                splitLocalLight(scene_, scene_.materials[material[side][v]], vertex.position,
+                                towardsEye(normalizedOrZero(vertex.normal), side), eye_, shadows_);
           }
         });
   }
@@ -153,9 +155,9 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
                            surface.dpdv);
         surface.shadingNormal = shadingNormal(material, surface);
       }
-      color = unshadowedLight(scene_, material, colors, surface.position,
-                              towardsEye(surface.normal, side),
-                              towardsEye(surface.shadingNormal, side), eye_);
+      color =
+          localLight(scene_, material, colors, surface.position, towardsEye(surface.normal, side),
+                     towardsEye(surface.shadingNormal, side), eye_, shadows_);
       break;
   }
   return {color, glm::length(surface.position - eye_), surface.normal};

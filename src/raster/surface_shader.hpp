@@ -6,8 +6,11 @@
 // centre in the world (ScreenFace); textures are looked up over the pixel's
 // footprint in them (for mipmapping).
 //
-// What the ray tracer adds to the model is left out: there are no shadows
-// (every light reaches every surface facing it), and no mirror reflection or
+// Shadows come from `shadows` when it is given (shadow maps), asked where the
+// model is evaluated: at every pixel with Phong shading, at the centroid or
+// the vertices with flat or Gouraud shading, whose shadows are as coarse as
+// their light. Without it every light reaches every surface facing it. What
+// else the ray tracer adds to the model is left out: no mirror reflection or
 // refraction; a transparent material is drawn opaque, with the model's
 // (1 - t) dimming of its ambient and diffuse light.
 #pragma once
@@ -35,10 +38,13 @@ class SurfaceShader {
   // the workers.
   SurfaceShader(const Scene& scene, const TessellatedScene& tessellated,
                 const ScreenGeometry& screen, const ViewProjection& view, Shading shading,
-                const Workers& workers);
+                const Workers& workers, const LightVisibility* shadows = nullptr);
 
   // The screen face `face` seen at the raster point `centre`.
   ShadedPixel shade(int face, const Vec2& centre) const;
+  const Material& materialOf(int face) const {
+    return scene_.materials[tessellated_.faces[screen_.faces[face].sceneFace].material];
+  }
 
  private:
   PixelFootprint uvFootprint(int face, const Vec2& centre, const SurfacePoint& surface) const;
@@ -50,6 +56,7 @@ class SurfaceShader {
   const ScreenGeometry& screen_;
   Vec3 eye_;
   Shading shading_;
+  const LightVisibility* shadows_;
   std::vector<SplitLight> faceLight_;  // flat: by screen face
   // Gouraud: by scene vertex, for each side of the surface seen (front:
   // the side its normal points to).

@@ -1,13 +1,19 @@
 #include "raster/visible_surface_renderer.hpp"
 
 #include <atomic>
+#include <optional>
 
 #include "core/random.hpp"
 #include "core/sampling.hpp"
+#include "raster/shadow_map.hpp"
 #include "render/film.hpp"
 
 namespace rise {
 namespace {
+
+ShadowMapSettings shadowMapSettings(const RenderSettings& settings) {
+  return {settings.shadowMapSize, settings.shadowBias, settings.shadowFilter};
+}
 
 void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
   const ProjectionCounters& counters = screen.counters;
@@ -21,14 +27,18 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
 }  // namespace
 
 AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
-                                             std::string_view citation) {
-  return {name,
-          summary,
-          citation,
-          Family::VisibleSurface,
-          {"depth", "normal", "cost", "face"},
-          {Option::Shading, Option::Culling, Option::Tessellation, Option::PlaneSize},
-          {Effect::DepthOfField, Effect::MotionBlur}};
+                                             std::string_view citation,
+                                             std::vector<Effect> ownEffects) {
+  std::vector<Effect> effects = {Effect::Shadows, Effect::DepthOfField, Effect::MotionBlur};
+  effects.insert(effects.end(), ownEffects.begin(), ownEffects.end());
+  return {
+      name,
+      summary,
+      citation,
+      Family::VisibleSurface,
+      {"depth", "normal", "cost", "face", "shadow-map"},
+      {Option::Shading, Option::Culling, Option::Tessellation, Option::PlaneSize, Option::Shadows},
+      std::move(effects)};
 }
 
 TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& settings,
@@ -166,7 +176,11 @@ RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
   const ViewProjection view(ViewFrame(scene.camera, settings.width, settings.height),
                             pass.pixelOffset, pass.lens);
   const ScreenGeometry screen = projectScene(tessellated, view, settings.backfaceCulling, workers);
-  const SurfaceShader shader(scene, tessellated, screen, view, settings.shading, workers);
+  std::optional<ShadowMaps> shadowMaps;
+  if (settings.shadows == ShadowMethod::Map)
+    shadowMaps.emplace(scene, tessellated, shadowMapSettings(settings), workers);
+  const SurfaceShader shader(scene, tessellated, screen, view, settings.shading, workers,
+                             shadowMaps ? &*shadowMaps : nullptr);
   RasterFrame frame(settings.width, settings.height, scene.image.background, screen, shader,
                     workers, observer.stepRecorder());
 
@@ -179,6 +193,10 @@ RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
   stats.add("covered_pixels", static_cast<double>(frame.coveredPixels()));
 
   RenderResult result = frame.takeResult();
+  if (shadowMaps) {
+    shadowMaps->addStats(stats);
+    result.buffers["shadow-map"] = shadowMaps->picture();
+  }
   result.stats = std::move(stats);
   return result;
 }

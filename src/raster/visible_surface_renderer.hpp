@@ -56,9 +56,11 @@ class VisibleSurfaceRenderer : public Renderer {
 
 // The description of a visible-surface algorithm: what the family shares
 // (its buffers, the settings it reads, the effects of the accumulation
-// passes) with the algorithm's own name, summary and citation.
+// passes and of shadow maps) with the algorithm's own name, summary,
+// citation and effects.
 AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
-                                             std::string_view citation);
+                                             std::string_view citation,
+                                             std::vector<Effect> ownEffects = {});
 
 // The scene tessellated as the settings ask, planes centred under the camera,
 // moving shapes where they are at `time`, a fraction of the shutter interval

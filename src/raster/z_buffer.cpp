@@ -10,6 +10,11 @@
 // the image (reported as "z_buffer_bytes"), and the work spent on hidden
 // polygons ("overdraw").
 //
+// Transparent polygons are drawn after the opaque ones, sorted back to front,
+// each blended over the pixels where it lies in front of the buffer's depth
+// without writing it (raster/transparency.hpp); "transparent_blends" counts
+// them.
+//
 // Depths are compared as w = 1 / n, which is affine across a polygon's image
 // and larger for nearer points. The image is cut into bands of scanlines that
 // threads draw in parallel, each band with the polygons that reach into it.
@@ -24,6 +29,7 @@
 
 #include "raster/bands.hpp"
 #include "raster/polygon_coverage.hpp"
+#include "raster/transparency.hpp"
 
 namespace rise {
 
@@ -31,7 +37,8 @@ const AlgorithmDescription& ZBufferRenderer::description() const {
   static const AlgorithmDescription description = visibleSurfaceAlgorithm(
       "z-buffer", "Catmull's z-buffer: a depth per pixel, polygons drawn in any order",
       "E. Catmull, A subdivision algorithm for computer display of curved surfaces, "
-      "PhD thesis, University of Utah, 1974");
+      "PhD thesis, University of Utah, 1974",
+      {Effect::Transparency});
   return description;
 }
 
@@ -40,10 +47,12 @@ namespace {
 struct ZBufferCounters {
   std::uint64_t depthTests = 0;
   std::uint64_t pixelsWritten = 0;
+  std::uint64_t blends = 0;
 
   ZBufferCounters& operator+=(const ZBufferCounters& other) {
     depthTests += other.depthTests;
     pixelsWritten += other.pixelsWritten;
+    blends += other.blends;
     return *this;
   }
 };
@@ -85,14 +94,51 @@ Step polygonDrawn(const ScreenGeometry& screen, int index, const RasterFrame& fr
   return step;
 }
 
+// The transparent polygons, back to front, each blended where it lies in
+// front of the opaque surface the buffer holds; `stepOf` numbers their
+// steps, after the opaque polygons'.
+void blendTransparent(const ScreenGeometry& screen, const PixelRect& band,
+                      std::span<const int> polygons, std::span<const std::int64_t> stepOf,
+                      const ZBuffer& buffer, RasterFrame& frame, ZBufferCounters& counters) {
+  StepRecorder* const steps = frame.steps();
+  PolygonCoverage coverage;
+  for (int index : transparentBackToFront(screen, frame, polygons)) {
+    const ScreenPolygon& polygon = screen.polygons[index];
+    const ScreenFace& face = screen.faces[polygon.face];
+    Step step;
+    if (steps) {
+      step = polygonDrawn(screen, index, frame);
+      step.text +=
+          "; transparent, it is blended over what is behind it, back to front after the "
+          "opaque polygons, and leaves the depth buffer as it is";
+    }
+    coverage.reset(screen.cornersOf(polygon));
+    coverage.forEachPixel(band, [&](int x, int y) {
+      ++counters.depthTests;
+      frame.addCost(x, y, 1.0f);
+      const float inverseDepth =
+          face.inverseDepthAt(Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+      const bool inFront = inverseDepth > buffer.inverseDepth[buffer.index(x, y)];
+      if (inFront) {
+        frame.blendVisible(x, y, polygon.face);
+        ++counters.blends;
+      }
+      if (steps) step.writes.push_back(frame.writeOf(x, y, polygon.face, inverseDepth, inFront));
+    });
+    if (steps) steps->record(std::move(step), stepOf[index], band.y0);
+  }
+}
+
 void drawBand(const ScreenGeometry& screen, const PixelRect& band, std::span<const int> polygons,
-              ZBuffer& buffer, RasterFrame& frame, ZBufferCounters& counters) {
+              std::span<const std::int64_t> blendStepOf, ZBuffer& buffer, RasterFrame& frame,
+              ZBufferCounters& counters) {
   buffer.clear(band);
   StepRecorder* const steps = frame.steps();
   PolygonCoverage coverage;
   for (int index : polygons) {
     const ScreenPolygon& polygon = screen.polygons[index];
     const ScreenFace& face = screen.faces[polygon.face];
+    if (frame.isTransparent(polygon.face)) continue;
     Step step;
     if (steps) step = polygonDrawn(screen, index, frame);
     coverage.reset(screen.cornersOf(polygon));
@@ -114,6 +160,7 @@ void drawBand(const ScreenGeometry& screen, const PixelRect& band, std::span<con
   for (int y = band.y0; y < band.y1; ++y)
     for (int x = band.x0; x < band.x1; ++x)
       if (const int face = buffer.face[buffer.index(x, y)]; face >= 0) frame.setVisible(x, y, face);
+  blendTransparent(screen, band, polygons, blendStepOf, buffer, frame, counters);
 }
 
 }  // namespace
@@ -121,13 +168,21 @@ void drawBand(const ScreenGeometry& screen, const PixelRect& band, std::span<con
 void ZBufferRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
                                         RasterFrame& frame, Stats& stats) const {
   ZBuffer buffer(frame.width(), frame.height());
+  const std::vector<int> madeOrder = inMadeOrder(screen);
+  std::vector<std::int64_t> blendStepOf(madeOrder.size());
+  if (frame.steps()) {
+    const std::vector<int> blended = transparentBackToFront(screen, frame, madeOrder);
+    for (std::size_t i = 0; i < blended.size(); ++i)
+      blendStepOf[blended[i]] = static_cast<std::int64_t>(madeOrder.size() + i);
+  }
   const ZBufferCounters counters = drawInBands<ZBufferCounters>(
-      workers, screen, inMadeOrder(screen), frame.width(), frame.height(),
+      workers, screen, madeOrder, frame.width(), frame.height(),
       [&](const PixelRect& band, std::span<const int> polygons, ZBufferCounters& bandCounters) {
-        drawBand(screen, band, polygons, buffer, frame, bandCounters);
+        drawBand(screen, band, polygons, blendStepOf, buffer, frame, bandCounters);
       });
   stats.add("depth_tests", static_cast<double>(counters.depthTests));
   stats.add("pixels_written", static_cast<double>(counters.pixelsWritten));
+  stats.add("transparent_blends", static_cast<double>(counters.blends));
   stats.add("z_buffer_bytes", static_cast<double>(buffer.pixels * (sizeof(float) + sizeof(int))));
 }
 

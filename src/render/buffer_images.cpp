@@ -33,6 +33,15 @@ Image visualizeDepth(const Image& raw) {
   });
 }
 
+Image visualizeShadowMap(const Image& raw) {
+  float nearest = kInfinity;
+  for (const Color& pixel : raw.pixels())
+    if (pixel.r > 0.0f) nearest = std::min(nearest, pixel.r);
+  return mapPixels(raw, [&](const Color& depth) {
+    return depth.r > 0.0f && std::isfinite(depth.r) ? Color(nearest / depth.r) : Color(0.0f);
+  });
+}
+
 Image visualizeNormal(const Image& raw) {
   return mapPixels(raw, [](const Color& normal) {
     return normal == Color(0.0f) ? Color(0.0f) : 0.5f * normal + 0.5f;
@@ -94,8 +103,9 @@ Image visualizeBuffer(std::string_view name, const Image& raw) {
   if (name == "normal") return visualizeNormal(raw);
   if (name == "cost") return visualizeCost(raw);
   if (name == "face") return visualizeFace(raw);
+  if (name == "shadow-map") return visualizeShadowMap(raw);
   throw std::invalid_argument("unknown buffer '" + std::string(name) +
-                              "' (known: depth, normal, cost, face)");
+                              "' (known: depth, normal, cost, face, shadow-map)");
 }
 
 }  // namespace rise

@@ -22,6 +22,9 @@ namespace rise {
 //           Visualization", Google AI Blog, 2019, in R. Du's polynomial fit.
 //  "face"   each face number as a colour of its own, picked by hashing the
 //           number, so that neighbouring faces differ; no face (-1) black.
+//  "shadow-map" grey by the inverse of the depth seen from the light: the
+//           nearest white, half as bright twice as far, nothing black (an
+//           infinite plane's far reaches would crush a linear scale).
 // Throws std::invalid_argument for any other name.
 Image visualizeBuffer(std::string_view name, const Image& raw);
 

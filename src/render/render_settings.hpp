@@ -25,6 +25,11 @@ enum class Shading { Flat, Gouraud, Phong };
 inline constexpr Shading kAllShadings[] = {Shading::Flat, Shading::Gouraud, Shading::Phong};
 std::string_view shadingName(Shading shading);  // as on the command line: "gouraud"
 
+// How the visible-surface algorithms find shadows: not at all (every light
+// reaches every surface facing it), or by Williams' shadow maps
+// (raster/shadow_map.cpp).
+enum class ShadowMethod { None, Map };
+
 // How to render, whatever the algorithm. The image size comes from the scene
 // unless the command line overrides it.
 struct RenderSettings {
@@ -43,6 +48,12 @@ struct RenderSettings {
   bool backfaceCulling = true;
   int tessellation = kDefaultTessellationLevel;
   float planeSize = kDefaultPlaneSize;
+  // Their shadows, and the shadow maps': texels a side, bias in texels, and
+  // the radius in texels of percentage-closer filtering (0: none).
+  ShadowMethod shadows = ShadowMethod::None;
+  int shadowMapSize = 1024;
+  float shadowBias = 1.5f;
+  int shadowFilter = 1;
 };
 
 }  // namespace rise

@@ -24,6 +24,8 @@ std::string_view toString(Option option) {
       return "tessellation";
     case Option::PlaneSize:
       return "plane-size";
+    case Option::Shadows:
+      return "shadows";
     case Option::Accel:
       return "accel";
     case Option::MaxDepth:
@@ -48,6 +50,8 @@ std::string_view toString(Effect effect) {
       return "soft shadows";
     case Effect::Gloss:
       return "gloss";
+    case Effect::Transparency:
+      return "transparency";
   }
   return "?";
 }

@@ -48,9 +48,10 @@ class RenderObserver : public Progress {
 enum class Family { VisibleSurface, RayTracing };
 
 // The settings of RenderSettings that only some algorithms read.
-enum class Option { Shading, Culling, Tessellation, PlaneSize, Accel, MaxDepth };
+enum class Option { Shading, Culling, Tessellation, PlaneSize, Shadows, Accel, MaxDepth };
 inline constexpr Option kAllOptions[] = {Option::Shading,   Option::Culling, Option::Tessellation,
-                                         Option::PlaneSize, Option::Accel,   Option::MaxDepth};
+                                         Option::PlaneSize, Option::Shadows, Option::Accel,
+                                         Option::MaxDepth};
 
 // What an algorithm shows of light beyond the Phong model at each surface.
 enum class Effect {
@@ -61,6 +62,7 @@ enum class Effect {
   MotionBlur,
   SoftShadows,
   Gloss,
+  Transparency,  // transparent surfaces blended over what is behind them, without refraction
 };
 
 std::string_view toString(Family family);

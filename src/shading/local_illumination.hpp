@@ -1,7 +1,8 @@
-// The Phong model summed over the lights with no shadows: the light a point
-// receives when nothing but its own surface can stand between it and a light,
-// as the visible-surface algorithms compute it. Where they evaluate it makes
-// their three shading methods:
+// The Phong model summed over the lights: the light a point receives when
+// nothing but its own surface stands between it and a light, or, given a
+// LightVisibility, when the shadows it answers do. The visible-surface
+// algorithms compute it so; where they evaluate it makes their three shading
+// methods:
 //
 //   flat     once per face, at its centroid with its own normal
 //            (W. J. Bouknight, "A procedure for generation of
@@ -21,6 +22,7 @@
 #pragma once
 
 #include "scene/scene.hpp"
+#include "shading/light_visibility.hpp"
 #include "shading/material_at_point.hpp"
 
 namespace rise {
@@ -28,10 +30,11 @@ namespace rise {
 // The model's light at `position`, seen from `eye`, on a surface whose own
 // normal there is `surfaceNormal`, shaded with `shadingNormal` (tilted by a
 // bump or normal map), both on the side the eye sees. A light behind the
-// surface is hidden by it, however far the shading normal tilts.
-Color unshadowedLight(const Scene& scene, const Material& material, const SurfaceColors& colors,
-                      const Vec3& position, const Vec3& surfaceNormal, const Vec3& shadingNormal,
-                      const Vec3& eye);
+// surface is hidden by it, however far the shading normal tilts; one in front
+// reaches it as `shadows` says, wholly when it is null.
+Color localLight(const Scene& scene, const Material& material, const SurfaceColors& colors,
+                 const Vec3& position, const Vec3& surfaceNormal, const Vec3& shadingNormal,
+                 const Vec3& eye, const LightVisibility* shadows = nullptr);
 
 // The same light as C * byColor + ks * byKs: the model is linear in C and ks.
 struct SplitLight {
@@ -43,7 +46,8 @@ struct SplitLight {
   }
 };
 
-SplitLight splitUnshadowedLight(const Scene& scene, const Material& material, const Vec3& position,
-                                const Vec3& normal, const Vec3& eye);
+SplitLight splitLocalLight(const Scene& scene, const Material& material, const Vec3& position,
+                           const Vec3& normal, const Vec3& eye,
+                           const LightVisibility* shadows = nullptr);
 
 }  // namespace rise

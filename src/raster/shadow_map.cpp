@@ -1,0 +1,288 @@
+// Shadow maps, after Williams (L. Williams, "Casting curved shadows on curved
+// surfaces", SIGGRAPH 1978), with percentage-closer filtering (W. T. Reeves,
+// D. H. Salesin and R. L. Cook, "Rendering antialiased shadows with depth
+// maps", SIGGRAPH 1987).
+//
+// A point is in shadow when something lies between it and the light. Before
+// the image is made, the scene is drawn from each light with a z-buffer that
+// keeps depths alone: the depth map holds, for each texel, how far from the
+// light the nearest surface is. A point light sees all around it, so it gets
+// six maps, the faces of a cube (90-degree views along +-x, +-y, +-z); a
+// directional light, from infinitely far, an orthographic map along its
+// direction around the scene's finite shapes. Shading a point then asks the
+// map: the point is carried into the light's view, and if it lies farther
+// than the depth stored at its texel, something nearer to the light hides it.
+//
+// The bias: the map samples the surfaces at texel centres, the point asking
+// lies anywhere in a texel, and on a surface tilted by theta from the light
+// the depth changes by a texel's side times tan(theta) across a texel; without
+// a margin, lit surfaces shadow themselves in stripes ("shadow acne"). The
+// point is compared with the stored depth plus a bias of `bias` texels, scaled
+// by the slope (1 + (r + 1/2) tan theta, for a filter r texels wide): too
+// little and the acne shows, too much and shadows come loose from the objects
+// that cast them ("peter panning"). --shadow-bias shows both.
+//
+// Percentage-closer filtering: filtering depths would average a near and a far
+// surface into a depth that is neither; Reeves, Salesin and Cook filter the
+// answers instead, comparing the point with each texel of a (2 r + 1)^2 square
+// around its own and taking the lit fraction, which softens the map's
+// staircase into a ramp a few texels wide.
+//
+// Transparent surfaces are kept apart: the map holds the nearest opaque depth
+// and the nearest transparent surface in front of it, whose transmission times
+// colour filters the light, as a shadow ray through one transparent shape is
+// filtered by Whitted's ray tracer.
+#include "raster/shadow_map.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "raster/polygon_clipping.hpp"
+#include "raster/polygon_coverage.hpp"
+
+namespace rise {
+
+Vec3 LightView::toView(const Vec3& world) const {
+  const Vec3 offset = world - origin;
+  return {glm::dot(offset, right), glm::dot(offset, up), glm::dot(offset, forward)};
+}
+
+Vec2 LightView::toMap(const Vec3& view) const {
+  const float extent = perspective ? view.z : halfWidth;
+  const float half = 0.5f * static_cast<float>(size);
+  return {(view.x / extent + 1.0f) * half, (1.0f - view.y / extent) * half};
+}
+
+float LightView::texelSize(float depth) const {
+  return 2.0f * (perspective ? depth : halfWidth) / static_cast<float>(size);
+}
+
+namespace {
+
+constexpr float kNearDistance = 1e-4f;
+constexpr float kInfiniteDepth = kInfinity;
+// Near the terminator tan(theta) grows without bound; the bias stops growing
+// where the surface is this steep from the light, a floor seen 89.9 degrees
+// from the light on the horizon of a map still far from it.
+constexpr float kSteepestSlope = 1000.0f;
+
+// The planes a.x + b.y + c.z + d >= 0, in view coordinates, of what a map
+// sees, a texel of margin beyond its sides.
+std::vector<glm::vec4> viewVolume(const LightView& view) {
+  const float widened = 1.0f + 2.0f / static_cast<float>(view.size);
+  if (view.perspective)
+    return {{-1.0f, 0.0f, widened, 0.0f},
+            {1.0f, 0.0f, widened, 0.0f},
+            {0.0f, -1.0f, widened, 0.0f},
+            {0.0f, 1.0f, widened, 0.0f},
+            {0.0f, 0.0f, 1.0f, -kNearDistance}};
+  const float side = widened * view.halfWidth;
+  return {{-1.0f, 0.0f, 0.0f, side},
+          {1.0f, 0.0f, 0.0f, side},
+          {0.0f, -1.0f, 0.0f, side},
+          {0.0f, 1.0f, 0.0f, side}};
+}
+
+// The six faces of the cube around `centre`.
+std::vector<LightView> cubeViews(const Vec3& centre, int size) {
+  const std::array<std::pair<Vec3, Vec3>, 6> axes = {{{{1, 0, 0}, {0, 1, 0}},
+                                                      {{-1, 0, 0}, {0, 1, 0}},
+                                                      {{0, 1, 0}, {0, 0, 1}},
+                                                      {{0, -1, 0}, {0, 0, 1}},
+                                                      {{0, 0, 1}, {0, 1, 0}},
+                                                      {{0, 0, -1}, {0, 1, 0}}}};
+  std::vector<LightView> views;
+  for (const auto& [forward, up] : axes)
+    views.push_back({centre, glm::cross(forward, up), up, forward, true, 0.0f, size});
+  return views;
+}
+
+// The cube face that sees `offset` from its centre: the axis it is longest
+// along, on its side (the order of cubeViews).
+int cubeFaceOf(const Vec3& offset) {
+  const Vec3 size = glm::abs(offset);
+  const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+  return 2 * axis + (offset[axis] < 0.0f ? 1 : 0);
+}
+
+// Around the scene's finite shapes (planes reach to the horizon and cast
+// nothing that matters there), along the light's direction `travel`.
+std::vector<LightView> orthographicView(const TessellatedScene& tessellated, const Scene& scene,
+                                        const Vec3& travel, int size) {
+  Bounds3 bounds;
+  for (const SceneFace& face : tessellated.faces)
+    if (scene.shapes[face.shape]->bounds().isFinite())
+      for (int vertex : face.vertices) bounds.grow(tessellated.vertices[vertex].position);
+  if (bounds.isEmpty()) return {};
+  const Vec3 centre = 0.5f * (bounds.min + bounds.max);
+  const float radius = std::max(0.5f * glm::length(bounds.max - bounds.min), 1e-3f);
+  Vec3 right, up;
+  orthonormalBasis(travel, right, up);
+  return {{centre - 2.0f * radius * travel, right, up, travel, false, radius, size}};
+}
+
+bool hasTransparentFaces(const Scene& scene, const TessellatedScene& tessellated) {
+  return std::any_of(
+      tessellated.faces.begin(), tessellated.faces.end(),
+      [&](const SceneFace& face) { return scene.materials[face.material].isTransparent(); });
+}
+
+// Draws the scene's faces into one map, clipped to what it sees; returns the
+// number of faces that reached it.
+std::uint64_t drawDepths(const Scene& scene, const TessellatedScene& tessellated, DepthMap& map) {
+  const LightView& view = map.view;
+  const std::vector<glm::vec4> volume = viewVolume(view);
+  const PixelRect whole{0, 0, view.size, view.size};
+  std::vector<Vec3> polygon, inside, outside;
+  PolygonCoverage coverage;
+  std::uint64_t drawn = 0;
+  for (const SceneFace& face : tessellated.faces) {
+    polygon.clear();
+    for (int vertex : face.vertices)
+      polygon.push_back(view.toView(tessellated.vertices[vertex].position));
+    for (const glm::vec4& plane : volume) {
+      if (polygon.empty()) break;
+      splitPolygon(polygon, plane, 0.0f, inside, outside);
+      polygon.swap(inside);
+    }
+    if (polygon.size() < 3) continue;
+    // On the map each corner is (x, y, affine depth), and the polygon is flat.
+    for (Vec3& corner : polygon) corner = Vec3(view.toMap(corner), view.affineDepth(corner.z));
+    // The plane of the corners, from the widest triangle of the fan: a
+    // clipped corner may lie on its neighbours' line.
+    const glm::dvec3 a(polygon[0]);
+    glm::dvec3 normal(0.0);
+    for (std::size_t i = 2; i < polygon.size(); ++i) {
+      const glm::dvec3 fan = glm::cross(glm::dvec3(polygon[i - 1]) - a, glm::dvec3(polygon[i]) - a);
+      if (std::abs(fan.z) > std::abs(normal.z)) normal = fan;
+    }
+    if (normal.z == 0.0) continue;  // seen edge-on
+    coverage.reset(polygon);
+    ++drawn;
+    const bool transparent = scene.materials[face.material].isTransparent();
+    coverage.forEachPixel(whole, [&](int x, int y) {
+      const double affine =
+          a.z - (normal.x * (x + 0.5 - a.x) + normal.y * (y + 0.5 - a.y)) / normal.z;
+      const float depth = view.depthOfAffine(static_cast<float>(affine));
+      const std::size_t texel = static_cast<std::size_t>(y) * view.size + x;
+      if (!transparent) {
+        map.opaque[texel] = std::min(map.opaque[texel], depth);
+      } else if (depth < map.filterDepth[texel]) {
+        map.filterDepth[texel] = depth;
+        map.filterMaterial[texel] = face.material;
+      }
+    });
+  }
+  return drawn;
+}
+
+}  // namespace
+
+ShadowMaps::ShadowMaps(const Scene& scene, const TessellatedScene& tessellated,
+                       const ShadowMapSettings& settings, const Workers& workers)
+    : scene_(scene), settings_(settings) {
+  const bool transparency = hasTransparentFaces(scene, tessellated);
+  for (const auto& light : scene.lights) {
+    const LightSample fromOrigin = light->illuminate(Vec3(0.0f));
+    const std::vector<LightView> views =
+        std::isfinite(fromOrigin.distance)
+            ? cubeViews(fromOrigin.toLight * fromOrigin.distance, settings.size)
+            : orthographicView(tessellated, scene, -fromOrigin.toLight, settings.size);
+    std::vector<DepthMap>& maps = maps_.emplace_back();
+    const std::size_t texels = static_cast<std::size_t>(settings.size) * settings.size;
+    for (const LightView& view : views) {
+      maps.push_back({view, std::vector<float>(texels, kInfiniteDepth), {}, {}});
+      if (!transparency) continue;
+      maps.back().filterDepth.assign(texels, kInfiniteDepth);
+      maps.back().filterMaterial.assign(texels, -1);
+    }
+  }
+  std::vector<DepthMap*> all;
+  for (std::vector<DepthMap>& maps : maps_)
+    for (DepthMap& map : maps) all.push_back(&map);
+  polygonsDrawn_ = workers.sumOverTasks<std::uint64_t>(
+      static_cast<int>(all.size()),
+      [&](int map, std::uint64_t& drawn) { drawn += drawDepths(scene, tessellated, *all[map]); });
+}
+
+// What one texel lets through to a point at `depth` plus its bias.
+Color ShadowMaps::filterAt(const DepthMap& map, int x, int y, float depth) const {
+  const std::size_t texel = static_cast<std::size_t>(y) * map.view.size + x;
+  if (depth > map.opaque[texel]) return Color(0.0f);
+  if (map.filterDepth.empty() || depth <= map.filterDepth[texel]) return Color(1.0f);
+  const Material& filter = scene_.materials[map.filterMaterial[texel]];
+  return filter.transmission * filter.color;
+}
+
+Color ShadowMaps::reaching(int light, const Vec3& position, const Vec3& normal) const {
+  const std::vector<DepthMap>& maps = maps_[static_cast<std::size_t>(light)];
+  if (maps.empty()) return Color(1.0f);
+  const DepthMap& map =
+      maps.size() == 1 ? maps[0]
+                       : maps[static_cast<std::size_t>(cubeFaceOf(position - maps[0].view.origin))];
+  const LightView& view = map.view;
+  const Vec3 seen = view.toView(position);
+  if (view.perspective && seen.z <= kNearDistance) return Color(1.0f);
+  const Vec2 onMap = view.toMap(seen);
+  const float size = static_cast<float>(view.size);
+  // Outside an orthographic map no finite shape casts a shadow; a cube face
+  // holds every point it is chosen for, but for rounding at its sides.
+  if (!view.perspective &&
+      !(onMap.x >= 0.0f && onMap.y >= 0.0f && onMap.x < size && onMap.y < size))
+    return Color(1.0f);
+  ++lookups_;
+
+  const Vec3 toLight = view.perspective ? glm::normalize(view.origin - position) : -view.forward;
+  const float cosine = std::max(std::abs(glm::dot(normal, toLight)), 1e-6f);
+  const float slope =
+      std::min(std::sqrt(std::max(0.0f, 1.0f - cosine * cosine)) / cosine, kSteepestSlope);
+  const int radius = settings_.filterRadius;
+  // Off a cube face's axis a texel spreads wider, by the squared ratio of
+  // the distance to the depth along the axis (up to 3, in the corners).
+  const float spread = view.perspective ? glm::dot(seen, seen) / (seen.z * seen.z) : 1.0f;
+  const float bias = settings_.bias * view.texelSize(seen.z) * spread *
+                     (1.0f + (static_cast<float>(radius) + 0.5f) * slope);
+  const int centreX = std::clamp(static_cast<int>(onMap.x), 0, view.size - 1);
+  const int centreY = std::clamp(static_cast<int>(onMap.y), 0, view.size - 1);
+  Color passed(0.0f);
+  for (int dy = -radius; dy <= radius; ++dy)
+    for (int dx = -radius; dx <= radius; ++dx)
+      passed += filterAt(map, std::clamp(centreX + dx, 0, view.size - 1),
+                         std::clamp(centreY + dy, 0, view.size - 1), seen.z - bias);
+  const int taps = (2 * radius + 1) * (2 * radius + 1);
+  tests_ += static_cast<std::uint64_t>(taps);
+  return passed / static_cast<float>(taps);
+}
+
+void ShadowMaps::addStats(Stats& stats) const {
+  std::uint64_t texels = 0;
+  for (const std::vector<DepthMap>& maps : maps_)
+    for (const DepthMap& map : maps) texels += map.opaque.size();
+  stats.add("shadow_map_texels", static_cast<double>(texels));
+  stats.add("shadow_map_polygons", static_cast<double>(polygonsDrawn_));
+  stats.add("shadow_lookups", static_cast<double>(lookups_.load()));
+  stats.add("shadow_tests", static_cast<double>(tests_.load()));
+}
+
+Image ShadowMaps::picture() const {
+  const int side = std::min(settings_.size, kPictureSide);
+  std::size_t mostMaps = 1;
+  for (const std::vector<DepthMap>& maps : maps_) mostMaps = std::max(mostMaps, maps.size());
+  Image image(static_cast<int>(mostMaps) * side, std::max(1, static_cast<int>(maps_.size())) * side,
+              Color(kInfiniteDepth));
+  for (std::size_t light = 0; light < maps_.size(); ++light)
+    for (std::size_t m = 0; m < maps_[light].size(); ++m) {
+      const DepthMap& map = maps_[light][m];
+      for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x) {
+          const int texelX = (2 * x + 1) * settings_.size / (2 * side);
+          const int texelY = (2 * y + 1) * settings_.size / (2 * side);
+          image.at(static_cast<int>(m) * side + x, static_cast<int>(light) * side + y) =
+              Color(map.opaque[static_cast<std::size_t>(texelY) * settings_.size + texelX]);
+        }
+    }
+  return image;
+}
+
+}  // namespace rise
