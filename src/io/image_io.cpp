@@ -39,6 +39,13 @@ float linearFromSrgb(float encoded) {
   return std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
 
+std::uint8_t byteFromLinear(float linear, Encoding encoding) {
+  // The zero comes first so that a NaN colour becomes black.
+  float value = std::min(std::max(0.0f, linear), 1.0f);
+  if (encoding == Encoding::Srgb) value = srgbFromLinear(value);
+  return static_cast<std::uint8_t>(std::lround(value * 255.0f));
+}
+
 namespace {
 
 ImageFileError fileError(const std::filesystem::path& path, std::string_view problem) {
@@ -120,13 +127,6 @@ ImageFormat formatOf(const std::filesystem::path& path) {
   if (lowered == ".ppm") return ImageFormat::Ppm;
   if (lowered == ".exr") return ImageFormat::Exr;
   throw fileError(path, "unsupported image format '" + extension + "' (use .png, .ppm or .exr)");
-}
-
-std::uint8_t byteFromLinear(float linear, Encoding encoding) {
-  // The zero comes first so that a NaN colour becomes black.
-  float value = std::min(std::max(0.0f, linear), 1.0f);
-  if (encoding == Encoding::Srgb) value = srgbFromLinear(value);
-  return static_cast<std::uint8_t>(std::lround(value * 255.0f));
 }
 
 float linearFromByte(std::uint8_t byte, Encoding encoding) {

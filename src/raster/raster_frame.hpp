@@ -2,27 +2,26 @@
 // face seen there. The frame shades it at once into the image and the
 // auxiliary buffers ("depth", "normal", "face"); pixels no face is seen at
 // keep the background. The algorithm also charges each pixel the work it
-// spent on it, for the "cost" buffer. Algorithms write distinct pixels from
-// distinct threads.
+// spent on it, for the "cost" buffer (visible_faces.hpp).
 #pragma once
 
 #include <cstdint>
 
 #include "raster/surface_shader.hpp"
+#include "raster/visible_faces.hpp"
 
 namespace rise {
 
-class RasterFrame {
+class RasterFrame final : public VisibleFaces {
  public:
   RasterFrame(int width, int height, const Color& background, const ScreenGeometry& screen,
               const SurfaceShader& shader, const Workers& workers);
 
-  int width() const { return result_.image.width(); }
-  int height() const { return result_.image.height(); }
+  int width() const override { return result_.image.width(); }
+  int height() const override { return result_.image.height(); }
 
-  // Screen face `face` is seen at pixel (x, y).
-  void setVisible(int x, int y, int face);
-  void addCost(int x, int y, float work) { cost_->at(x, y) += Color(work); }
+  void setVisible(int x, int y, int face) override;
+  void addCost(int x, int y, float work) override { cost_->at(x, y) += Color(work); }
 
   // The number of pixels some face is seen at.
   std::uint64_t coveredPixels() const;

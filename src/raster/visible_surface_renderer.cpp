@@ -5,7 +5,6 @@
 #include "render/film.hpp"
 
 namespace rise {
-namespace {
 
 void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
   const ProjectionCounters& counters = screen.counters;
@@ -15,8 +14,6 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
   stats.add("polygons_clipped", static_cast<double>(counters.clipped));
   stats.add("polygons_drawn", static_cast<double>(screen.polygons.size()));
 }
-
-}  // namespace
 
 AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
                                              std::string_view citation) {
@@ -38,8 +35,6 @@ TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& s
   tessellation.time = time;
   return tessellateScene(scene, tessellation);
 }
-
-namespace {
 
 // The accumulation buffer's passes: where in the pixel, where on the lens
 // and when in the shutter interval each is taken, every dimension stratified
@@ -67,6 +62,8 @@ std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
   return passes;
 }
 
+namespace {
+
 // Reports the progress of one pass as its share of all of them.
 class PassObserver final : public RenderObserver {
  public:
@@ -85,13 +82,22 @@ class PassObserver final : public RenderObserver {
 
 }  // namespace
 
+RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSettings& settings,
+                                            RenderObserver& observer) const {
+  return renderInPasses(scene, settings, observer,
+                        [&](const TessellatedScene& tessellated, const AccumulationPass& pass,
+                            RenderObserver& passObserver) {
+                          return renderSample(scene, tessellated, settings, pass, passObserver);
+                        });
+}
+
 // Each pass's pixels are added to the film as samples at the pass's offset,
 // so that the reconstruction filter weighs them as it weighs the ray
 // tracers' samples. The scene is tessellated again only when a pass's time
 // differs from the last. The auxiliary buffers are the first pass's, but
 // "cost", which adds up over the passes, as do the counters.
-RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSettings& settings,
-                                            RenderObserver& observer) const {
+RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
+                            RenderObserver& observer, const PassRenderer& renderPass) {
   const std::vector<AccumulationPass> passes = accumulationPasses(scene.camera, settings);
   const int passCount = static_cast<int>(passes.size());
   TessellatedScene tessellated = tessellateForRaster(scene, settings, passes[0].time);
@@ -103,7 +109,7 @@ RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSett
     if (pass > 0 && passes[pass].time != passes[pass - 1].time)
       tessellated = tessellateForRaster(scene, settings, passes[pass].time);
     PassObserver passObserver(observer, pass, passCount);
-    RenderResult result = renderSample(scene, tessellated, settings, passes[pass], passObserver);
+    RenderResult result = renderPass(tessellated, passes[pass], passObserver);
     for (int y = 0; y < settings.height; ++y)
       for (int x = 0; x < settings.width; ++x)
         filmTile.addSample({x, y}, passes[pass].pixelOffset, result.image.at(x, y));

@@ -142,17 +142,11 @@ class Recursion {
   TraceCounters& counters_;
 };
 
-// Whitted's one ray for every choice: the light's centre, the ideal
-// direction.
-class SingleRayChoices final : public PathChoices {
- public:
-  LightSample aimAt(const Light& light, const Vec3& point, int) override {
-    return light.illuminate(point);
-  }
-  Vec3 scatter(const Vec3& ideal, float, const Vec3&, int) override { return ideal; }
-};
-
 }  // namespace
+
+LightSample SingleRayChoices::aimAt(const Light& light, const Vec3& point, int) {
+  return light.illuminate(point);
+}
 
 SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathChoices& choices,
                           TraceCounters& counters) {
@@ -160,6 +154,11 @@ SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathCho
   Hit hit;
   if (!context.intersector.nearest(ray, 0.0f, hit, counters.intersections))
     return {context.scene.image.background};
+  return shadeFirstHit(context, ray, hit, choices, counters);
+}
+
+SampleResult shadeFirstHit(const TracingContext& context, const Ray& ray, const Hit& hit,
+                           PathChoices& choices, TraceCounters& counters) {
   const Material& material = context.scene.materialOf(*hit.shape);
   const ShadingFrame frame = shadingFrame(ray, hit, material);
   Recursion recursion(context, choices, counters);

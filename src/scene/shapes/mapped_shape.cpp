@@ -94,26 +94,29 @@ void MappedShape::tessellate(const TessellationSettings& settings, Tessellation&
     return found->second;
   };
   const auto addPiece = [&](const std::array<SurfaceVertex, 3>& corners,
-                            const std::array<std::array<int, 3>, 3>& weights) {
+                            const std::array<std::array<int, 3>, 3>& weights, int primitive) {
     std::array<SurfaceVertex, 3> piece;
     for (int corner = 0; corner < 3; ++corner)
       piece[corner] = pointOf(corners, weights[corner], pieces);
     const std::array<Vec2, 3> uvs =
         mapping_.cornerUvs({piece[0].position, piece[1].position, piece[2].position});
     for (int corner = 0; corner < 3; ++corner) piece[corner].uv = uvs[corner];
-    out.addTriangle(vertexFor(piece[0]), vertexFor(piece[1]), vertexFor(piece[2]));
+    out.addTriangle(vertexFor(piece[0]), vertexFor(piece[1]), vertexFor(piece[2]), primitive);
   };
-  for (const auto& [a, b, c] : surface.triangles) {
+  for (std::size_t triangle = 0; triangle < surface.triangles.size(); ++triangle) {
+    const auto& [a, b, c] = surface.triangles[triangle];
+    const int primitive = surface.primitives[triangle];
     const std::array corners{surface.vertices[a], surface.vertices[b], surface.vertices[c]};
     // The grid of points i steps towards b and j towards c: a piece pointing
     // as the triangle does at each, and one pointing back between them.
     for (int i = 0; i < pieces; ++i) {
       for (int j = 0; i + j < pieces; ++j) {
         const int rest = pieces - i - j;
-        addPiece(corners, {{{rest, i, j}, {rest - 1, i + 1, j}, {rest - 1, i, j + 1}}});
+        addPiece(corners, {{{rest, i, j}, {rest - 1, i + 1, j}, {rest - 1, i, j + 1}}}, primitive);
         if (rest >= 2)
           addPiece(corners,
-                   {{{rest - 1, i + 1, j}, {rest - 2, i + 1, j + 1}, {rest - 1, i, j + 1}}});
+                   {{{rest - 1, i + 1, j}, {rest - 2, i + 1, j + 1}, {rest - 1, i, j + 1}}},
+                   primitive);
       }
     }
   }
