@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iomanip>
@@ -158,7 +159,46 @@ std::string html(const std::string& sceneName, const std::vector<ComparedRender>
   return out.str();
 }
 
+int pixelsDiffering(const Image& a, const Image& b, Encoding encoding) {
+  int differing = 0;
+  for (int y = 0; y < a.height(); ++y) {
+    for (int x = 0; x < a.width(); ++x) {
+      bool differs = false;
+      for (int channel = 0; channel < 3; ++channel)
+        differs |= std::abs(byteFromLinear(a.at(x, y)[channel], encoding) -
+                            byteFromLinear(b.at(x, y)[channel], encoding)) > 2;
+      differing += differs ? 1 : 0;
+    }
+  }
+  return differing;
+}
+
+// "ray-tracing" -> "ray_tracing", as counters are named.
+std::string counterWord(std::string_view name) {
+  std::string word(name);
+  std::replace(word.begin(), word.end(), '-', '_');
+  return word;
+}
+
 }  // namespace
+
+void addSameImageCounters(std::vector<ComparedRender>& renders, Encoding encoding) {
+  for (ComparedRender& render : renders) {
+    const std::string_view other = render.algorithm->sameImageAs;
+    const auto reference = std::find_if(renders.begin(), renders.end(), [&](const auto& candidate) {
+      return !other.empty() && candidate.algorithm->name == other;
+    });
+    if (reference == renders.end()) continue;
+    const Stats& theirs = reference->result.stats;
+    Stats& ours = render.result.stats;
+    ours.add("pixels_differing_from_" + counterWord(other),
+             pixelsDiffering(render.result.image, reference->result.image, encoding));
+    ours.add("intersection_tests_saved",
+             theirs.value("intersection_tests") - ours.value("intersection_tests"));
+    ours.add("speedup_over_" + counterWord(other),
+             theirs.value("render_seconds") / ours.value("render_seconds"));
+  }
+}
 
 std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& directory,
                                                    const std::string& sceneName,
