@@ -58,3 +58,17 @@ start_benchmark() {
   [[ -x "$build/rise" ]] || die "no RISE executable at $build/rise (build it, or pass BUILD_DIR)"
   mkdir -p "$out"
 }
+
+# Prints the number under `key` in the JSON file, to the millisecond.
+json_seconds() {
+  python3 -c 'import json, sys; print("%.3f" % json.load(open(sys.argv[1]))[sys.argv[2]])' \
+    "$1" "$2" 2>/dev/null || die "no $2 in $1"
+}
+
+# The smallest of the numbers on standard input.
+smallest() { sort -g | head -n 1; }
+
+# a / b to two decimals, or "-" when b is not a positive number.
+ratio() {
+  awk -v a="$1" -v b="$2" 'BEGIN { if (b != "-" && b > 0) printf "%.2f", a / b; else print "-" }'
+}

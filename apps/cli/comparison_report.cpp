@@ -9,6 +9,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/byte_encoding.hpp"
+
 namespace rise::cli {
 namespace {
 
@@ -160,13 +162,13 @@ std::string html(const std::string& sceneName, const std::vector<ComparedRender>
 }
 
 int pixelsDiffering(const Image& a, const Image& b, Encoding encoding) {
+  const ByteEncoder& toByte = byteEncoder(encoding);
   int differing = 0;
   for (int y = 0; y < a.height(); ++y) {
     for (int x = 0; x < a.width(); ++x) {
       bool differs = false;
       for (int channel = 0; channel < 3; ++channel)
-        differs |= std::abs(byteFromLinear(a.at(x, y)[channel], encoding) -
-                            byteFromLinear(b.at(x, y)[channel], encoding)) > 2;
+        differs |= std::abs(toByte(a.at(x, y)[channel]) - toByte(b.at(x, y)[channel])) > 2;
       differing += differs ? 1 : 0;
     }
   }

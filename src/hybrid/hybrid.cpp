@@ -42,6 +42,11 @@
 // passes of the visible-surface algorithms (visible_surface_renderer.hpp):
 // each pass does both passes above at its own offset in the pixel, point of
 // the lens and instant of the shutter interval.
+//
+// Its steps, for a student: the item buffer filling, a scanline a step, the
+// items in their materials' colours; then each band of pixels shaded, with
+// the pixels that fell back and those that spawned mirror or glass rays. The
+// ray tree of a chosen pixel is Whitted's, one for each accumulation pass.
 #include "hybrid/hybrid.hpp"
 
 #include <algorithm>
@@ -54,8 +59,9 @@
 #include <tuple>
 #include <vector>
 
+#include "hybrid/hybrid_counters.hpp"
+#include "hybrid/item_buffer.hpp"
 #include "raster/bands.hpp"
-#include "raster/scanline.hpp"
 #include "raster/visible_surface_renderer.hpp"
 #include "ray/distributed_ray_tracing.hpp"
 #include "ray/ray_tracing.hpp"
@@ -81,74 +87,39 @@ const AlgorithmDescription& HybridRenderer::description() const {
 
 namespace {
 
-// What the item buffer says a pixel sees: an object, and for an object of
-// several primitives (a mesh) the one under the polygon. Ordered as the
-// acceleration structures break ties between hits at the same distance.
-struct Item {
-  int shape = -1;  // -1: nothing, the background
-  int primitive = 0;
-
-  bool operator==(const Item&) const = default;
-  auto operator<=>(const Item&) const = default;
-};
-
-enum class Verdict : std::uint8_t { FromItemBuffer, Outside, Inside };
-
-// What pass 2 counts, besides the rays: its statistics, in this order.
-enum Count {
-  kFromItemBuffer,  // primary rays the item buffer answered
-  kOutside,         // fallback pixels, by which side of the outline
-  kInside,
-  kItemTests,
-  kSpawning,       // pixels whose shading spawned rays
-  kMirrorOrGlass,  // ... reflected or refracted ones among them
-  kCountKinds
-};
-constexpr std::array<const char*, kCountKinds> kCountNames = {
-    "primary_rays_from_item_buffer",  "fallback_pixels_outside_outline",
-    "fallback_pixels_inside_outline", "item_buffer_tests",
-    "pixels_spawning_rays",           "pixels_spawning_reflection_or_refraction"};
-
-struct HybridCounters {
-  TraceCounters traced;  // every intersection test, the full primary rays, the secondary rays
-  std::array<std::uint64_t, kCountKinds> counts{};
-  double itemBufferSeconds = 0.0;  // pass 1
-  double raySeconds = 0.0;         // pass 2
-
-  HybridCounters& operator+=(const HybridCounters& other) {
-    traced += other.traced;
-    for (int kind = 0; kind < kCountKinds; ++kind) counts[kind] += other.counts[kind];
-    itemBufferSeconds += other.itemBufferSeconds;
-    raySeconds += other.raySeconds;
-    return *this;
-  }
-};
-
 double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+
+// Where one accumulation pass reports: its steps (the first pass's only) and
+// the ray trees of the chosen pixel, as sample `index` of the pixel.
+struct PassRecording {
+  StepRecorder* steps;
+  StepRecorder* trees;
+  int index;
+};
 
 // Both passes of one accumulation pass.
 class HybridPass {
  public:
   HybridPass(const TracingContext& context, const TessellatedScene& tessellated,
-             const RenderSettings& settings, const AccumulationPass& pass, RenderObserver& observer)
+             const RenderSettings& settings, const AccumulationPass& pass, RenderObserver& observer,
+             const PassRecording& recording)
       : context_(context),
         tessellated_(tessellated),
         settings_(settings),
         pass_(pass),
+        recording_(recording),
         workers_(settings.threads, observer),
         view_(context.scene.camera, settings.width, settings.height),
         projection_(view_, pass.pixelOffset, pass.lens),
-        faces_(settings.width, settings.height),
         pixels_(static_cast<std::size_t>(settings.width) * settings.height) {}
 
   RenderResult run(HybridCounters& counters) {
     Stats stats;
     auto start = std::chrono::steady_clock::now();
-    screen_ = projectScene(tessellated_, projection_, settings_.backfaceCulling, workers_);
-    addProjectionStats(stats, screen_);
-    sweepScanlines(screen_, workers_, faces_, stats);
+    items_.emplace(context_.scene, tessellated_, projection_, settings_.backfaceCulling, workers_,
+                   recording_.steps, stats);
     counters.itemBufferSeconds += secondsSince(start);
 
     start = std::chrono::steady_clock::now();
@@ -157,7 +128,11 @@ class HybridPass {
     followOutlines(std::move(found.seeds), counters);
     Images images(settings_.width, settings_.height);
     counters += inBands<HybridCounters>(
-        [&](int x, int y, HybridCounters& band) { shade(x, y, images, band); });
+        [&](int x, int y, HybridCounters& band) { shade(x, y, images, band); },
+        [&](const PixelRect& band, int task, const HybridCounters& bandCounters) {
+          if (recording_.steps)
+            recording_.steps->record(raysStep(band, bandCounters), settings_.height + task);
+        });
     counters.raySeconds += secondsSince(start);
 
     std::uint64_t covered = 0;
@@ -172,7 +147,8 @@ class HybridPass {
     Item item;
     Hit hit;  // the ray's hit on its item's exact surface
     Verdict verdict = Verdict::FromItemBuffer;
-    std::uint32_t tests = 0;  // intersection tests made for it, for the "cost" buffer
+    bool mirrorOrGlass = false;  // its shading spawned reflected or refracted rays
+    std::uint32_t tests = 0;     // intersection tests made for it, for the "cost" buffer
   };
   // A pixel that fell back because `item` covers it: its neighbours are
   // tested against that item in turn.
@@ -195,15 +171,21 @@ class HybridPass {
   Pixel& at(int x, int y) { return pixels_[static_cast<std::size_t>(y) * settings_.width + x]; }
 
   // Calls visit(x, y, part) for every pixel, band by band on the workers,
-  // each band with a part of its own; returns the parts summed in order.
-  template <typename Part, typename Visit>
-  Part inBands(const Visit& visit) {
+  // each band with a part of its own, then done(band, its number, part);
+  // returns the parts summed in order.
+  template <typename Part, typename Visit, typename Done>
+  Part inBands(const Visit& visit, const Done& done) {
     const std::vector<PixelRect> bands = makeBands(settings_.width, settings_.height);
     return workers_.sumOverTasks<Part>(static_cast<int>(bands.size()), [&](int task, Part& part) {
       const PixelRect& band = bands[static_cast<std::size_t>(task)];
       for (int y = band.y0; y < band.y1; ++y)
         for (int x = band.x0; x < band.x1; ++x) visit(x, y, part);
+      done(band, task, part);
     });
+  }
+  template <typename Part, typename Visit>
+  Part inBands(const Visit& visit) {
+    return inBands<Part>(visit, [](const PixelRect&, int, const Part&) {});
   }
 
   template <typename Visit>
@@ -221,13 +203,6 @@ class HybridPass {
         view_, Vec2(static_cast<float>(x), static_cast<float>(y)) + pass_.pixelOffset, pass_.lens);
     ray.time = pass_.time;
     return ray;
-  }
-
-  // The item under a screen face of the item buffer (-1: none).
-  Item itemOf(int face) const {
-    if (face < 0) return {};
-    const SceneFace& seen = tessellated_.faces[screen_.faces[face].sceneFace];
-    return {seen.shape, seen.primitive};
   }
 
   // The nearest hit of the pixel's ray on the item's exact surface alone.
@@ -261,8 +236,8 @@ class HybridPass {
   // the seeds of followOutlines.
   void findHit(int x, int y, BandWork& band) {
     Pixel& pixel = at(x, y);
-    const int face = faces_.at(x, y);
-    pixel.item = itemOf(face);
+    const int face = items_->faceAt(x, y);
+    pixel.item = items_->itemOf(face);
     std::optional<Ray> ray;  // made when first needed: most of the sky's pixels need none
     const auto rayHere = [&]() -> const Ray& { return ray ? *ray : ray.emplace(rayAt(x, y)); };
     if (pixel.item.shape >= 0 && !intersect(pixel.item, rayHere(), pixel, pixel.hit, band.counters))
@@ -270,9 +245,9 @@ class HybridPass {
     std::array<Item, 4> tested;
     int count = 0;
     forEachNeighbour(x, y, [&](int nx, int ny) {
-      const int besideFace = faces_.at(nx, ny);
+      const int besideFace = items_->faceAt(nx, ny);
       if (besideFace == face || besideFace < 0) return;
-      const Item item = itemOf(besideFace);
+      const Item item = items_->itemOf(besideFace);
       const auto end = tested.begin() + count;
       if (item == pixel.item || std::find(tested.begin(), end, item) != end) return;
       tested[static_cast<std::size_t>(count++)] = item;
@@ -331,52 +306,73 @@ class HybridPass {
     const std::uint64_t shadowRays = traced.shadowRays, tests = traced.intersections.tests;
     const std::uint64_t mirrorOrGlassRays = traced.reflectionRays + traced.refractionRays;
     SingleRayChoices whitted;
-    SampleResult sample{context_.scene.image.background};
+    const bool recording = recording_.trees && recording_.trees->wantsTreeOf({x, y});
+    RayTree tree{{x, y}, recording_.index, Vec2(x, y) + pass_.pixelOffset};
+    RayTree* const treeHere = recording ? &tree : nullptr;
+    SampleResult sample;
     if (pixel.verdict != Verdict::FromItemBuffer) {
       ++counters.counts[pixel.verdict == Verdict::Outside ? kOutside : kInside];
-      sample = tracePrimary(context_, rayAt(x, y), whitted, traced);
+      sample = tracePrimary(context_, rayAt(x, y), whitted, traced, treeHere);
     } else {
       ++counters.counts[kFromItemBuffer];
-      if (pixel.item.shape >= 0)
-        sample = shadeFirstHit(context_, rayAt(x, y), pixel.hit, whitted, traced);
+      const Hit* hit = pixel.item.shape >= 0 ? &pixel.hit : nullptr;
+      sample = shadeFirstHit(context_, rayAt(x, y), hit, whitted, traced, treeHere);
     }
-    const bool mirrorOrGlass = traced.reflectionRays + traced.refractionRays > mirrorOrGlassRays;
-    counters.counts[kSpawning] += traced.shadowRays > shadowRays || mirrorOrGlass;
-    counters.counts[kMirrorOrGlass] += mirrorOrGlass;
+    if (recording) recording_.trees->recordTree(std::move(tree));
+    pixel.mirrorOrGlass = traced.reflectionRays + traced.refractionRays > mirrorOrGlassRays;
+    counters.counts[kSpawning] += traced.shadowRays > shadowRays || pixel.mirrorOrGlass;
+    counters.counts[kMirrorOrGlass] += pixel.mirrorOrGlass;
     pixel.tests += static_cast<std::uint32_t>(traced.intersections.tests - tests);
 
-    const int face = faces_.at(x, y);
     images.image.at(x, y) = sample.color;
     images.depth.at(x, y) = Color(sample.depth);
     images.normal.at(x, y) = sample.normal;
     images.cost.at(x, y) = Color(static_cast<float>(pixel.tests));
-    images.face.at(x, y) =
-        Color(face < 0 ? -1.0f : static_cast<float>(screen_.faces[face].sceneFace));
+    images.face.at(x, y) = Color(static_cast<float>(items_->sceneFaceAt(x, y)));
+  }
+
+  // A band of pass 2 as a step: its pixels settled, those that fell back to a
+  // full primary ray and those that spawned mirror or glass rays marked.
+  Step raysStep(const PixelRect& band, const HybridCounters& counters) {
+    const auto count = [&](Count kind) { return static_cast<double>(counters.counts[kind]); };
+    Step step{"rays", "rows " + std::to_string(band.y0) + " to " + std::to_string(band.y1 - 1) +
+                          " shaded by rays: " + std::to_string(counters.traced.rays()) + " rays, " +
+                          std::to_string(counters.traced.intersections.tests) +
+                          " intersection tests"};
+    step.values = {
+        {"primary_rays_from_item_buffer", count(kFromItemBuffer)},
+        {"fallback_pixels", count(kOutside) + count(kInside)},
+        {"pixels_spawning_rays", count(kSpawning)},
+        {"pixels_spawning_reflection_or_refraction", count(kMirrorOrGlass)},
+        {"intersection_tests", static_cast<double>(counters.traced.intersections.tests)}};
+    StepTable fallbacks{"pixels that fell back", {"x", "y", "side of the outline"}, {}};
+    for (int y = band.y0; y < band.y1; ++y) {
+      for (int x = band.x0; x < band.x1; ++x) {
+        const Pixel& pixel = at(x, y);
+        const Vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+        if (pixel.mirrorOrGlass) step.shapes.push_back({StepShape::Kind::Point, "rays", {centre}});
+        if (pixel.verdict == Verdict::FromItemBuffer) continue;
+        step.shapes.push_back({StepShape::Kind::Point, "fallback", {centre}});
+        fallbacks.rows.push_back({static_cast<double>(x), static_cast<double>(y),
+                                  pixel.verdict == Verdict::Outside ? "outside" : "inside"});
+      }
+    }
+    step.tables.push_back(std::move(fallbacks));
+    step.settled.push_back(band);
+    return step;
   }
 
   const TracingContext& context_;
   const TessellatedScene& tessellated_;
   const RenderSettings& settings_;
   const AccumulationPass& pass_;
+  const PassRecording recording_;
   const Workers workers_;
   const ViewFrame view_;
   const ViewProjection projection_;
-  ScreenGeometry screen_;
-  FaceBuffer faces_;
+  std::optional<ItemBuffer> items_;
   std::vector<Pixel> pixels_;
 };
-
-void addHybridStats(Stats& stats, const HybridCounters& counters) {
-  counters.traced.addTo(stats);
-  const auto& counts = counters.counts;
-  for (int kind = 0; kind < kCountKinds; ++kind) {
-    if (kind == kOutside)
-      stats.add("fallback_pixels", static_cast<double>(counts[kOutside] + counts[kInside]));
-    stats.add(kCountNames[kind], static_cast<double>(counts[kind]));
-  }
-  stats.add("item_buffer_seconds", counters.itemBufferSeconds);
-  stats.add("ray_pass_seconds", counters.raySeconds);
-}
 
 }  // namespace
 
@@ -385,11 +381,15 @@ RenderResult HybridRenderer::render(const Scene& scene, const RenderSettings& se
   const SceneIntersector intersector(scene, settings.accel, settings.threads);
   const TracingContext context{scene, intersector, settings.maxDepth};
   HybridCounters counters;
+  int passes = 0;
   RenderResult result = renderInPasses(
       scene, settings, observer,
       [&](const TessellatedScene& tessellated, const AccumulationPass& pass,
           RenderObserver& passObserver) {
-        return HybridPass(context, tessellated, settings, pass, passObserver).run(counters);
+        const PassRecording recording{passObserver.stepRecorder(), observer.stepRecorder(),
+                                      passes++};
+        return HybridPass(context, tessellated, settings, pass, passObserver, recording)
+            .run(counters);
       });
   addHybridStats(result.stats, counters);
   intersector.addBuildStats(result.stats);

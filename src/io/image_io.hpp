@@ -2,7 +2,6 @@
 // renderer's linear floats unchanged (values above 1 included).
 #pragma once
 
-#include <cstdint>
 #include <filesystem>
 #include <stdexcept>
 
@@ -18,9 +17,6 @@ enum class Encoding { Srgb, Linear };
 // then a 1/2.4 power curve. Both map [0, 1] onto [0, 1].
 float srgbFromLinear(float linear);
 float linearFromSrgb(float encoded);
-// A linear value as PNG and PPM store it: clamped to [0, 1], encoded and
-// rounded to the nearest of 256 levels.
-std::uint8_t byteFromLinear(float linear, Encoding encoding);
 
 class ImageFileError : public std::runtime_error {
  public:

@@ -116,6 +116,10 @@ bool isFinite(const Vec3& v) {
 // unusable, or computed when the file has none.
 MeshGeometry geometryOf(const aiMesh& mesh) {
   MeshGeometry geometry;
+  geometry.positions.reserve(mesh.mNumVertices);
+  if (mesh.HasNormals()) geometry.normals.reserve(mesh.mNumVertices);
+  if (mesh.HasTextureCoords(0)) geometry.uvs.reserve(mesh.mNumVertices);
+  geometry.triangles.reserve(mesh.mNumFaces);
   for (unsigned int i = 0; i < mesh.mNumVertices; ++i) {
     geometry.positions.push_back(toVec3(mesh.mVertices[i]));
     if (mesh.HasNormals()) {

@@ -236,8 +236,10 @@ Scene readScene(const YAML::Node& root, std::string source) {
   if (const std::optional<Field> materials = map.optional("materials"))
     scene.materials = readMaterials(*materials, sceneDirectory);
   for (const Field& item :
-       readList(map.required("objects"), "a list of objects", "an item of 'objects'"))
+       readList(map.required("objects"), "a list of objects", "an item of 'objects'")) {
     scene.shapes.push_back(readObject(item, scene.materials, sceneDirectory));
+    scene.shapeNames.push_back(describeObject(item));
+  }
   return scene;
 }
 

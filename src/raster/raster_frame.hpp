@@ -2,7 +2,8 @@
 // face seen there. The frame shades it at once into the image and the
 // auxiliary buffers ("depth", "normal", "face"); pixels no face is seen at
 // keep the background. The algorithm also charges each pixel the work it
-// spent on it, for the "cost" buffer (visible_faces.hpp).
+// spent on it, for the "cost" buffer, and reports its steps to the frame's
+// recorder when it has one (visible_faces.hpp).
 #pragma once
 
 #include <cstdint>
@@ -15,13 +16,20 @@ namespace rise {
 class RasterFrame final : public VisibleFaces {
  public:
   RasterFrame(int width, int height, const Color& background, const ScreenGeometry& screen,
-              const SurfaceShader& shader, const Workers& workers);
+              const SurfaceShader& shader, const Workers& workers, StepRecorder* steps);
 
   int width() const override { return result_.image.width(); }
   int height() const override { return result_.image.height(); }
 
   void setVisible(int x, int y, int face) override;
   void addCost(int x, int y, float work) override { cost_->at(x, y) += Color(work); }
+
+  StepRecorder* steps() const override { return steps_; }
+  // Screen face `face` drawn at pixel (x, y) at inverse depth w, for a
+  // step's record; `kept` false where it lost a depth test there.
+  PixelWrite writeOf(int x, int y, int face, float inverseDepth, bool kept = true) const;
+  // The number in the scene of screen face `face`, as the "face" buffer has it.
+  int sceneFaceOf(int face) const { return screen_.faces[face].sceneFace; }
 
   // The number of pixels some face is seen at.
   std::uint64_t coveredPixels() const;
@@ -32,11 +40,15 @@ class RasterFrame final : public VisibleFaces {
  private:
   const ScreenGeometry& screen_;
   const SurfaceShader& shader_;
+  StepRecorder* steps_;
   RenderResult result_;
   Image* depth_;
   Image* normal_;
   Image* face_;
   Image* cost_;
 };
+
+// The outline of a polygon on the screen, for a step's record.
+StepShape outlineOf(std::span<const Vec3> corners, std::string role);
 
 }  // namespace rise

@@ -31,6 +31,9 @@ struct Scene {
   std::vector<std::unique_ptr<Light>> lights;
   std::vector<Material> materials;
   std::vector<std::unique_ptr<Shape>> shapes;
+  // Each shape as the scene file names it, "sphere at line 16", for the
+  // explanations; empty for a scene built in code.
+  std::vector<std::string> shapeNames;
 
   const Material& materialOf(const Shape& shape) const { return materials[shape.material()]; }
 };

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/random.hpp"
-#include "io/image_io.hpp"
+#include "io/byte_encoding.hpp"
 #include "scene/light.hpp"
 #include "scene/shapes/box.hpp"
 #include "scene/shapes/plane.hpp"
