@@ -193,6 +193,18 @@ TEST_F(RiseCommand, ComparesTheHybridWithTheRayTracerWhoseImageItRenders) {
   EXPECT_TRUE(rows["ray-tracing"]["pixels_differing_from_ray_tracing"].empty());
 }
 
+// The pixel of the glass sphere: the hybrid's tree is Whitted's, the primary
+// ray's hit taken from the item buffer.
+TEST_F(RiseCommand, InspectsAPixelOfTheHybrid) {
+  const CommandResult result =
+      runRise("inspect " + example("classic.yaml") +
+              " --width 160 --samples 1 --pixel 80,55 -a hybrid -o " + file("tree.json").string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("refraction"), std::string::npos) << result.output;
+  std::ifstream json(file("tree.json"));
+  EXPECT_EQ(nlohmann::json::parse(json)["algorithm"], "hybrid");
+}
+
 TEST_F(RiseCommand, ListsTheAlgorithmsWithTheirCitations) {
   const CommandResult result = runRise("algorithms");
   EXPECT_EQ(result.status, 0);
