@@ -14,6 +14,7 @@
 #include "io/scene_error.hpp"
 #include "job.hpp"
 #include "look_inside.hpp"
+#include "manual_command.hpp"
 #include "progress_bar.hpp"
 #include "render/buffer_images.hpp"
 #include "settings_options.hpp"
@@ -217,6 +218,7 @@ int run(int argc, char** argv) {
   const CLI::App* algorithmsCommand =
       app.add_subcommand("algorithms", "List the algorithms, each with its citation");
   const auto runLookInside = addLookInsideCommands(app);
+  const auto runManual = addManualCommand(app);
 
   try {
     app.parse(argc, argv);
@@ -227,6 +229,7 @@ int run(int argc, char** argv) {
   if (*compareCommand) return compare(compareOptions);
   if (*validateCommand) return validate(validatePath);
   if (const std::optional<int> status = runLookInside()) return *status;
+  if (const std::optional<int> status = runManual()) return *status;
   if (*algorithmsCommand) listAlgorithms();
   return 0;
 }
