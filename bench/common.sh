@@ -49,6 +49,16 @@ enter_repository() {
   cd "$(dirname "${BASH_SOURCE[0]}")/.." || die "cannot enter the repository"
 }
 
+# What every benchmark does first: reads the command line (parse_options),
+# enters the repository, dies unless RISE is built in $build, and makes the
+# output folder.
+start_benchmark() {
+  parse_options "$@"
+  enter_repository
+  [[ -x "$build/rise" ]] || die "no RISE executable at $build/rise (build it, or pass BUILD_DIR)"
+  mkdir -p "$out"
+}
+
 # Prints the number under `key` in the JSON file, to the millisecond.
 json_seconds() {
   python3 -c 'import json, sys; print("%.3f" % json.load(open(sys.argv[1]))[sys.argv[2]])' \

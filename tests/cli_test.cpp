@@ -7,8 +7,11 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "algorithms/registry.hpp"
 #include "io/image_io.hpp"
@@ -150,6 +153,56 @@ TEST_F(RiseCommand, ComparesEveryAlgorithmOnOneScene) {
   }
   EXPECT_NE(page.find("<svg"), std::string::npos);  // the bar chart of the times
   EXPECT_TRUE(fs::exists(file("compare/results.md")));
+}
+
+// results.csv as a table: the algorithm's row, the counter's column.
+std::map<std::string, std::map<std::string, std::string>> readResults(const fs::path& csv) {
+  const auto split = [](const std::string& line) {
+    std::vector<std::string> cells;
+    std::stringstream stream(line);
+    for (std::string cell; std::getline(stream, cell, ',');) cells.push_back(cell);
+    return cells;
+  };
+  std::ifstream file(csv);
+  std::string line;
+  std::getline(file, line);
+  const std::vector<std::string> header = split(line);
+  std::map<std::string, std::map<std::string, std::string>> rows;
+  while (std::getline(file, line)) {
+    const std::vector<std::string> cells = split(line);
+    for (std::size_t i = 1; i < cells.size(); ++i) rows[cells[0]][header[i]] = cells[i];
+  }
+  return rows;
+}
+
+TEST_F(RiseCommand, ComparesTheHybridWithTheRayTracerWhoseImageItRenders) {
+  const CommandResult result =
+      runRise("compare " + example("md2.yaml") + " --width 80 --algorithms ray-tracing,hybrid -o " +
+              file("hybrid").string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  auto rows = readResults(file("hybrid/results.csv"));
+  std::map<std::string, std::string>& hybrid = rows["hybrid"];
+  EXPECT_LE(std::stoi(hybrid["pixels_differing_from_ray_tracing"]), 4);
+  EXPECT_EQ(std::stod(hybrid["intersection_tests_saved"]),
+            std::stod(rows["ray-tracing"]["intersection_tests"]) -
+                std::stod(hybrid["intersection_tests"]));
+  EXPECT_GT(std::stod(hybrid["speedup_over_ray_tracing"]), 0.0);
+  for (const char* counter : {"primary_rays_from_item_buffer", "fallback_pixels",
+                              "item_buffer_seconds", "ray_pass_seconds"})
+    EXPECT_FALSE(hybrid[counter].empty()) << counter;
+  EXPECT_TRUE(rows["ray-tracing"]["pixels_differing_from_ray_tracing"].empty());
+}
+
+// The pixel of the glass sphere: the hybrid's tree is Whitted's, the primary
+// ray's hit taken from the item buffer.
+TEST_F(RiseCommand, InspectsAPixelOfTheHybrid) {
+  const CommandResult result =
+      runRise("inspect " + example("classic.yaml") +
+              " --width 160 --samples 1 --pixel 80,55 -a hybrid -o " + file("tree.json").string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("refraction"), std::string::npos) << result.output;
+  std::ifstream json(file("tree.json"));
+  EXPECT_EQ(nlohmann::json::parse(json)["algorithm"], "hybrid");
 }
 
 TEST_F(RiseCommand, ListsTheAlgorithmsWithTheirCitations) {

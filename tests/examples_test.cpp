@@ -14,24 +14,17 @@
 
 #include "algorithms/registry.hpp"
 #include "io/scene_file.hpp"
+#include "support/example_testing.hpp"
 #include "support/raster_testing.hpp"
 
 namespace rise {
 namespace {
 
+using namespace example_testing;
 using namespace raster_testing;
 
 constexpr int kWidth = 64;
 constexpr int kHeight = 48;
-
-std::vector<std::string> exampleScenes() {
-  std::vector<std::string> names;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(std::string(RISE_SOURCE_DIR) + "/examples"))
-    if (entry.path().extension() == ".yaml") names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
 int finitePixels(const Image& image) {
   int finite = 0;
@@ -109,11 +102,7 @@ TEST_P(ExampleScene, LooksTheSameToEveryVisibleSurfaceAlgorithm) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, ExampleScene, testing::ValuesIn(exampleScenes()),
-                         [](const testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param.substr(0, info.param.find('.'));
-                           std::replace(name.begin(), name.end(), '-', '_');
-                           return name;
-                         });
+                         exampleTestName);
 
 }  // namespace
 }  // namespace rise

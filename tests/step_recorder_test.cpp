@@ -182,6 +182,48 @@ TEST(StepRecorder, TheScanlinesSpansAndBuffersGiveItsFaceBuffer) {
   }
 }
 
+// The hybrid's first steps are the scanline's, one a scanline, each drawing
+// the items of its row where the scanline's face buffer sees a face but
+// settling nothing; then its bands of rays settle every pixel once and mark
+// those that spawned mirror or glass rays.
+TEST(StepRecorder, TheHybridFillsItsItemBufferThenShadesByRays) {
+  const Scene scene = example("classic.yaml");
+  const RenderSettings settings = small(scene, 96, 72);
+  Recording recording;
+  render("hybrid", scene, settings, recording);
+  RenderObserver nobody;
+  const RenderResult scanline = render("scanline", scene, settings, nobody);
+  const std::vector<Step> steps = recording.recorder.allSteps();
+  const auto height = static_cast<std::size_t>(settings.height);
+  ASSERT_GT(steps.size(), height);
+  for (std::size_t y = 0; y < height; ++y) {
+    const Step& step = steps[y];
+    EXPECT_EQ(step.kind, "scanline");
+    EXPECT_TRUE(step.settled.empty());
+    std::vector<int> row(static_cast<std::size_t>(settings.width), -1);
+    for (const PixelWrite& write : step.writes) {
+      ASSERT_EQ(write.y, static_cast<int>(y));
+      row[static_cast<std::size_t>(write.x)] = write.face;
+    }
+    for (int x = 0; x < settings.width; ++x)
+      EXPECT_EQ(row[static_cast<std::size_t>(x)], faceAt(scanline, x, static_cast<int>(y)))
+          << x << "," << y;
+  }
+  Image settledTimes(settings.width, settings.height);
+  int mirrorOrGlass = 0;
+  for (std::size_t i = height; i < steps.size(); ++i) {
+    EXPECT_EQ(steps[i].kind, "rays");
+    for (const PixelRect& area : steps[i].settled)
+      for (int y = area.y0; y < area.y1; ++y)
+        for (int x = area.x0; x < area.x1; ++x) settledTimes.at(x, y) += Color(1.0f);
+    mirrorOrGlass += static_cast<int>(
+        std::count_if(steps[i].shapes.begin(), steps[i].shapes.end(),
+                      [](const StepShape& shape) { return shape.role == "rays"; }));
+  }
+  for (const Color& times : settledTimes.pixels()) ASSERT_EQ(times, Color(1.0f));
+  EXPECT_GT(mirrorOrGlass, 0);
+}
+
 // The colour a pixel's trees add up to, their samples weighed alike (the box
 // filter).
 Color treesSum(const std::vector<RayTree>& trees) {
@@ -197,7 +239,7 @@ TEST(StepRecorder, ThePixelsRayTreesAddUpToItsColour) {
   // the background.
   const std::map<std::string, glm::ivec2> pixels = {
       {"glass", {80, 55}}, {"mirror", {128, 55}}, {"shadow", {92, 82}}, {"background", {5, 5}}};
-  for (const char* algorithm : {"ray-tracing", "distributed-ray-tracing"}) {
+  for (const char* algorithm : {"ray-tracing", "distributed-ray-tracing", "hybrid"}) {
     for (int samples : {1, 4}) {
       const RenderSettings settings = small(scene, 160, 120, samples);
       for (const auto& [what, pixel] : pixels) {

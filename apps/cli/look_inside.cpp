@@ -78,8 +78,8 @@ int inspect(const InspectOptions& options) {
   const Renderer& renderer = *findRenderer(options.algorithm);
   if (renderer.description().family == Family::VisibleSurface) {
     std::cerr << "rise: -a " << options.algorithm
-              << ": a visible-surface algorithm traces no rays; expected a ray tracer (`rise "
-                 "explain` shows the steps of the others)\n";
+              << ": a visible-surface algorithm traces no rays; expected a ray tracer or the "
+                 "hybrid (`rise explain` shows the steps of the others)\n";
     return kExitBadInput;
   }
   if (!options.picture.empty() && options.picture.extension() != ".svg") {
@@ -165,7 +165,7 @@ std::function<std::optional<int>()> addLookInsideCommands(CLI::App& app) {
       ->required();
   inspectCommand
       ->add_option("-a,--algorithm", inspectOptions->algorithm,
-                   "A ray tracer (default: ray-tracing)")
+                   "A ray tracer or the hybrid (default: ray-tracing)")
       ->check(CLI::IsMember(algorithmNames()));
   inspectCommand->add_option("-o,--output", inspectOptions->json, "Also write the tree as JSON");
   inspectCommand->add_option(

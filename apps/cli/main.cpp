@@ -108,6 +108,7 @@ int compare(const CompareOptions& options) {
     renders.push_back({&renderer->description(), renderWithProgress(*renderer, job)});
     std::cerr << name << ": " << renders.back().result.stats.value("render_seconds") << " s\n";
   }
+  addSameImageCounters(renders, options.encoding);
   const std::filesystem::path directory =
       options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
   try {

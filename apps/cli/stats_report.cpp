@@ -1,5 +1,6 @@
 #include "stats_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -20,9 +21,12 @@ std::string formatValue(double value) {
 void printStats(std::ostream& out, const RenderDescription& render, const Stats& stats) {
   out << render.algorithm << ": " << render.scene << ", " << render.width << "x" << render.height
       << ", " << render.threads << (render.threads == 1 ? " thread\n" : " threads\n");
+  // A column for the names, wide enough for the longest.
+  std::size_t width = 28;
+  for (const auto& entry : stats.entries()) width = std::max(width, entry.first.size() + 1);
   for (const auto& [name, value] : stats.entries()) {
     std::string label = name;
-    label.resize(std::max<std::size_t>(label.size(), 28), ' ');
+    label.resize(width, ' ');
     out << "  " << label << formatValue(value) << "\n";
   }
 }

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <tuple>
 
+#include "hybrid/hybrid.hpp"
 #include "raster/area_subdivision.hpp"
 #include "raster/depth_sort.hpp"
 #include "raster/scanline.hpp"
@@ -33,7 +34,8 @@ std::span<const Renderer* const> allRenderers() {
       ZBufferRenderer,
       ScanlineRenderer,
       WhittedRayTracer,
-      DistributedRayTracer>();
+      DistributedRayTracer,
+      HybridRenderer>();
   // clang-format on
 }
 

@@ -3,27 +3,26 @@
 // auxiliary buffers ("depth", "normal", "face"); pixels no face is seen at
 // keep the background. The algorithm also charges each pixel the work it
 // spent on it, for the "cost" buffer, and reports its steps to the frame's
-// recorder when it has one. Algorithms write distinct pixels from distinct
-// threads.
+// recorder when it has one (visible_faces.hpp).
 #pragma once
 
 #include <cstdint>
 
 #include "raster/surface_shader.hpp"
-#include "render/step_recorder.hpp"
+#include "raster/visible_faces.hpp"
 
 namespace rise {
 
-class RasterFrame {
+class RasterFrame final : public VisibleFaces {
  public:
   RasterFrame(int width, int height, const Color& background, const ScreenGeometry& screen,
               const SurfaceShader& shader, const Workers& workers, StepRecorder* steps);
 
-  int width() const { return result_.image.width(); }
-  int height() const { return result_.image.height(); }
+  int width() const override { return result_.image.width(); }
+  int height() const override { return result_.image.height(); }
 
   // Screen face `face` is seen at pixel (x, y).
-  void setVisible(int x, int y, int face);
+  void setVisible(int x, int y, int face) override;
   // Screen face `face`, transparent, is seen at pixel (x, y) over what the
   // pixel shows: its own light, plus what is behind filtered by its
   // transmission times its colour (raster/transparency.hpp).
@@ -32,10 +31,9 @@ class RasterFrame {
   // The colour of transparent face `face` at (x, y) over `behind`.
   Color blendedOver(int x, int y, int face, const Color& behind) const;
   const Color& background() const { return background_; }
-  void addCost(int x, int y, float work) { cost_->at(x, y) += Color(work); }
+  void addCost(int x, int y, float work) override { cost_->at(x, y) += Color(work); }
 
-  // Where the algorithm reports its steps, or nullptr when nobody listens.
-  StepRecorder* steps() const { return steps_; }
+  StepRecorder* steps() const override { return steps_; }
   // Screen face `face` drawn at pixel (x, y) at inverse depth w, for a
   // step's record; `kept` false where it lost a depth test there.
   PixelWrite writeOf(int x, int y, int face, float inverseDepth, bool kept = true) const;

@@ -82,22 +82,23 @@ int firstScanlineFrom(float y) { return static_cast<int>(std::ceil(y - 0.5f)); }
 class BandSweep {
  public:
   BandSweep(const ScreenGeometry& screen, const PixelRect& band, std::span<const int> polygons,
-            RasterFrame& frame, ScanlineCounters& counters)
+            VisibleFaces& faces, ScanlineCounters& counters)
       : screen_(screen),
         band_(band),
         polygons_(polygons),
-        frame_(frame),
+        faces_(faces),
         counters_(counters),
         edgeTable_(band.y1 - band.y0),
-        lineInverseDepth_(frame.width(), 0.0f),
-        lineFace_(frame.width(), -1) {}
+        lineInverseDepth_(faces.width(), 0.0f),
+        lineFace_(faces.width(), -1),
+        lineCost_(faces.width(), 0.0f) {}
 
   void run() {
     buildEdgeTable();
     for (int y = band_.y0; y < band_.y1; ++y) {
       updateActiveEdges(y);
       drawSpans(y);
-      if (StepRecorder* steps = frame_.steps()) steps->record(scanlineStep(y), y);
+      if (StepRecorder* steps = faces_.steps()) steps->record(scanlineStep(y), y);
       emitScanline(y);
     }
   }
@@ -167,11 +168,11 @@ class BandSweep {
   void drawSpan(int y, int face, float left, float right) {
     const ScreenFace& screenFace = screen_.faces[face];
     const int x0 = std::max(firstScanlineFrom(left), 0);
-    const int x1 = std::min(firstScanlineFrom(right), frame_.width());
+    const int x1 = std::min(firstScanlineFrom(right), faces_.width());
     const float centreY = static_cast<float>(y) + 0.5f;
     for (int x = x0; x < x1; ++x) {
       ++counters_.depthTests;
-      frame_.addCost(x, y, 1.0f);
+      ++lineCost_[x];
       // The face's own affine depth, not one stepped along the span, so
       // that every algorithm compares the very same depths.
       const float inverseDepth =
@@ -184,10 +185,12 @@ class BandSweep {
   }
 
   void emitScanline(int y) {
-    for (int x = 0; x < frame_.width(); ++x) {
-      if (lineFace_[x] >= 0) frame_.setVisible(x, y, lineFace_[x]);
+    for (int x = 0; x < faces_.width(); ++x) {
+      if (lineFace_[x] >= 0) faces_.setVisible(x, y, lineFace_[x]);
+      if (lineCost_[x] > 0.0f) faces_.addCost(x, y, lineCost_[x]);
       lineInverseDepth_[x] = 0.0f;
       lineFace_[x] = -1;
+      lineCost_[x] = 0.0f;
     }
   }
 
@@ -218,23 +221,23 @@ class BandSweep {
     forEachSpan([&](int order, float left, float right) {
       const int polygon = polygons_[order];
       spans.rows.push_back({static_cast<double>(polygon),
-                            static_cast<double>(frame_.sceneFaceOf(screen_.polygons[polygon].face)),
-                            left, right});
+                            static_cast<double>(sceneFaceOf(screen_.polygons[polygon].face)), left,
+                            right});
       step.shapes.push_back({StepShape::Kind::Segment, "span", {{left, centre}, {right, centre}}});
     });
     step.tables.push_back(std::move(spans));
     step.tables.push_back(lineBuffers());
-    step.settled.push_back({0, y, frame_.width(), y + 1});
+    step.settled.push_back({0, y, faces_.width(), y + 1});
     return step;
   }
 
   // The scanline's depth and face buffers, as runs of one face.
   StepTable lineBuffers() const {
     StepTable runs{"depth and face buffers", {"from x", "to x", "face", "w at first"}, {}};
-    for (int x = 0; x < frame_.width();) {
+    for (int x = 0; x < faces_.width();) {
       int end = x + 1;
-      while (end < frame_.width() && lineFace_[end] == lineFace_[x]) ++end;
-      const int face = lineFace_[x] < 0 ? -1 : frame_.sceneFaceOf(lineFace_[x]);
+      while (end < faces_.width() && lineFace_[end] == lineFace_[x]) ++end;
+      const int face = lineFace_[x] < 0 ? -1 : sceneFaceOf(lineFace_[x]);
       runs.rows.push_back({static_cast<double>(x), static_cast<double>(end - 1),
                            static_cast<double>(face), lineInverseDepth_[x]});
       x = end;
@@ -242,34 +245,43 @@ class BandSweep {
     return runs;
   }
 
+  // The number in the scene of screen face `face`, as the "face" buffer has it.
+  int sceneFaceOf(int face) const { return screen_.faces[face].sceneFace; }
+
   const ScreenGeometry& screen_;
   const PixelRect& band_;
   std::span<const int> polygons_;
-  RasterFrame& frame_;
+  VisibleFaces& faces_;
   ScanlineCounters& counters_;
   std::vector<std::vector<ActiveEdge>> edgeTable_;  // a bucket per scanline of the band
   std::vector<ActiveEdge> activeEdges_, merged_;
   std::vector<float> lineInverseDepth_;  // 0: infinitely far
   std::vector<int> lineFace_;            // -1: none
+  std::vector<float> lineCost_;          // the depth tests made at each pixel
 };
 
 }  // namespace
 
 void ScanlineRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
                                          RasterFrame& frame, Stats& stats) const {
+  sweepScanlines(screen, workers, frame, stats);
+}
+
+void sweepScanlines(const ScreenGeometry& screen, const Workers& workers, VisibleFaces& faces,
+                    Stats& stats) {
   const ScanlineCounters counters = drawInBands<ScanlineCounters>(
-      workers, screen, inMadeOrder(screen), frame.width(), frame.height(),
+      workers, screen, inMadeOrder(screen), faces.width(), faces.height(),
       [&](const PixelRect& band, std::span<const int> polygons, ScanlineCounters& bandCounters) {
-        BandSweep(screen, band, polygons, frame, bandCounters).run();
+        BandSweep(screen, band, polygons, faces, bandCounters).run();
       });
   stats.add("depth_tests", static_cast<double>(counters.depthTests));
   stats.add("pixels_written", static_cast<double>(counters.pixelsWritten));
   stats.add("edge_table_entries", static_cast<double>(counters.edges));
   stats.add("active_edges_per_scanline",
-            static_cast<double>(counters.activeEdgeVisits) / std::max(frame.height(), 1));
+            static_cast<double>(counters.activeEdgeVisits) / std::max(faces.height(), 1));
   stats.add("active_edges_max", static_cast<double>(counters.activeEdgesMax));
   stats.add("scanline_buffer_bytes",
-            static_cast<double>(frame.width()) * (sizeof(float) + sizeof(int)));
+            static_cast<double>(faces.width()) * (sizeof(float) + sizeof(int)));
 }
 
 }  // namespace rise

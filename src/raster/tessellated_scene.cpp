@@ -39,15 +39,21 @@ TessellatedScene tessellateScene(const Scene& scene, const TessellationSettings&
         part.projection ? std::optional<PlacedProjection>(std::in_place, *part.projection,
                                                           part.projectionPlacement)
                         : std::nullopt);
+    // A shape that wraps a mesh into one primitive (a moving mesh) is
+    // tested whole.
+    const bool onePrimitive = scene.shapes[shape]->primitiveCount() == 1;
     const int firstVertex = static_cast<int>(tessellated.vertices.size());
     tessellated.vertices.insert(tessellated.vertices.end(), part.vertices.begin(),
                                 part.vertices.end());
     tessellated.faces.reserve(tessellated.faces.size() + part.triangles.size());
-    for (const auto& [a, b, c] : part.triangles)
+    for (std::size_t triangle = 0; triangle < part.triangles.size(); ++triangle) {
+      const auto& [a, b, c] = part.triangles[triangle];
       tessellated.faces.push_back({{firstVertex + a, firstVertex + b, firstVertex + c},
                                    static_cast<int>(shape),
+                                   onePrimitive ? 0 : part.primitives[triangle],
                                    scene.shapes[shape]->material(),
                                    cullable});
+    }
   }
   return tessellated;
 }

@@ -17,6 +17,7 @@ namespace rise {
 struct SceneFace {
   std::array<int, 3> vertices;  // into TessellatedScene::vertices, counter-clockwise
   int shape;                    // into Scene::shapes
+  int primitive;                // the shape's primitive the face lies on (Tessellation)
   int material;                 // into Scene::materials
   // The face is part of a closed surface around a solid, and the eye is
   // outside that solid: if it faces away from the eye, it is hidden.

@@ -9,7 +9,6 @@
 #include "render/film.hpp"
 
 namespace rise {
-namespace {
 
 ShadowMapSettings shadowMapSettings(const RenderSettings& settings) {
   return {settings.shadowMapSize, settings.shadowBias, settings.shadowFilter};
@@ -23,8 +22,6 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
   stats.add("polygons_clipped", static_cast<double>(counters.clipped));
   stats.add("polygons_drawn", static_cast<double>(screen.polygons.size()));
 }
-
-}  // namespace
 
 AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
                                              std::string_view citation,
@@ -51,8 +48,6 @@ TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& s
   return tessellateScene(scene, tessellation);
 }
 
-namespace {
-
 // The accumulation buffer's passes: where in the pixel, where on the lens
 // and when in the shutter interval each is taken, every dimension stratified
 // on its own and shuffled, as the distributed ray tracer's samples are (Cook
@@ -78,6 +73,8 @@ std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
     passes.push_back({offsets[i], lens[i], camera.hasMotionBlur() ? times[i] : 0.0f});
   return passes;
 }
+
+namespace {
 
 // Reports the progress of one pass as its share of all of them; the steps of
 // the first pass alone are recorded, the others repeating them.
@@ -127,13 +124,22 @@ class FrameRegions final : public Progress {
 
 }  // namespace
 
+RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSettings& settings,
+                                            RenderObserver& observer) const {
+  return renderInPasses(scene, settings, observer,
+                        [&](const TessellatedScene& tessellated, const AccumulationPass& pass,
+                            RenderObserver& passObserver) {
+                          return renderSample(scene, tessellated, settings, pass, passObserver);
+                        });
+}
+
 // Each pass's pixels are added to the film as samples at the pass's offset,
 // so that the reconstruction filter weighs them as it weighs the ray
 // tracers' samples. The scene is tessellated again only when a pass's time
 // differs from the last. The auxiliary buffers are the first pass's, but
 // "cost", which adds up over the passes, as do the counters.
-RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSettings& settings,
-                                            RenderObserver& observer) const {
+RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
+                            RenderObserver& observer, const PassRenderer& renderPass) {
   const std::vector<AccumulationPass> passes = accumulationPasses(scene.camera, settings);
   const int passCount = static_cast<int>(passes.size());
   TessellatedScene tessellated = tessellateForRaster(scene, settings, passes[0].time);
@@ -145,7 +151,7 @@ RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSett
     if (pass > 0 && passes[pass].time != passes[pass - 1].time)
       tessellated = tessellateForRaster(scene, settings, passes[pass].time);
     PassObserver passObserver(observer, pass, passCount);
-    RenderResult result = renderSample(scene, tessellated, settings, passes[pass], passObserver);
+    RenderResult result = renderPass(tessellated, passes[pass], passObserver);
     for (int y = 0; y < settings.height; ++y)
       for (int x = 0; x < settings.width; ++x)
         filmTile.addSample({x, y}, passes[pass].pixelOffset, result.image.at(x, y));

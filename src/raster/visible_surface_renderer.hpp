@@ -15,6 +15,8 @@
 // algorithm spent on it, in the units its description gives.
 #pragma once
 
+#include <functional>
+
 #include "raster/raster_frame.hpp"
 #include "raster/tessellated_scene.hpp"
 
@@ -53,6 +55,26 @@ class VisibleSurfaceRenderer : public Renderer {
   virtual void resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
                                  RasterFrame& frame, Stats& stats) const = 0;
 };
+
+// The passes the settings' samples call for, each dimension stratified and
+// shuffled apart.
+std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
+                                                 const RenderSettings& settings);
+
+// Renders one pass, of the scene tessellated at the pass's time: the image
+// with its auxiliary buffers, "cost" among them, and the counters.
+using PassRenderer = std::function<RenderResult(
+    const TessellatedScene& tessellated, const AccumulationPass& pass, RenderObserver& observer)>;
+
+// The accumulation buffer: the passes the settings' samples call for, each
+// rendered by `renderPass` and added to the film through the reconstruction
+// filter. What every visible-surface algorithm renders by, and the hybrid
+// algorithm too.
+RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
+                            RenderObserver& observer, const PassRenderer& renderPass);
+
+// "polygons_in", "polygons_culled", ...: what the projection did.
+void addProjectionStats(Stats& stats, const ScreenGeometry& screen);
 
 // The description of a visible-surface algorithm: what the family shares
 // (its buffers, the settings it reads, the effects of the accumulation

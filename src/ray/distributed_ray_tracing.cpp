@@ -95,19 +95,6 @@ CameraSample randomCameraSample(Rng& rng) {
           {rng.uniform(), rng.uniform()}};
 }
 
-// The ray through the raster position from the point of a thin lens that
-// `lens` picks, aimed at the point the pinhole ray meets on the plane in
-// focus.
-Ray thinLensRay(const ViewFrame& view, const Vec2& raster, const Vec2& lens) {
-  const Ray pinhole = view.primaryRay(raster.x, raster.y);
-  if (view.lensRadius() == 0.0f) return pinhole;
-  const Vec3 inFocus =
-      pinhole.at(view.focalDistance() / glm::dot(pinhole.direction, view.forward()));
-  const Vec2 onLens = view.lensPoint(lens);
-  const Vec3 origin = view.eye() + onLens.x * view.right() + onLens.y * view.up();
-  return Ray{origin, glm::normalize(inFocus - origin)};
-}
-
 // A direction spread around `ideal` (unit) within a cone whose half-angle has
 // the tangent `roughness`, chosen by the sample u. The spread direction is
 // kept on the same side of the surface as the ideal one, mirrored across it
@@ -145,6 +132,16 @@ class DistributedChoices final : public PathChoices {
 };
 
 }  // namespace
+
+Ray thinLensRay(const ViewFrame& view, const Vec2& raster, const Vec2& lens) {
+  const Ray pinhole = view.primaryRay(raster.x, raster.y);
+  if (view.lensRadius() == 0.0f) return pinhole;
+  const Vec3 inFocus =
+      pinhole.at(view.focalDistance() / glm::dot(pinhole.direction, view.forward()));
+  const Vec2 onLens = view.lensPoint(lens);
+  const Vec3 origin = view.eye() + onLens.x * view.right() + onLens.y * view.up();
+  return Ray{origin, glm::normalize(inFocus - origin)};
+}
 
 RenderResult DistributedRayTracer::render(const Scene& scene, const RenderSettings& settings,
                                           RenderObserver& observer) const {

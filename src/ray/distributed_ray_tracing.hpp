@@ -12,4 +12,9 @@ class DistributedRayTracer final : public Renderer {
                       RenderObserver& observer) const override;
 };
 
+// The ray through the raster position from the point of a thin lens that
+// `lens` picks (ViewFrame::lensPoint), aimed at the point the pinhole ray
+// meets on the plane in focus; the pinhole ray itself with no aperture.
+Ray thinLensRay(const ViewFrame& view, const Vec2& raster, const Vec2& lens);
+
 }  // namespace rise

@@ -88,15 +88,22 @@ class Recursion {
   // Intersect: the nearest hit, shaded, or the background. `weight` is what
   // the colour it brings back will be multiplied by, for the tree.
   Color trace(const Ray& ray, int depth, RayKind kind, const Color& weight) {
-    if (tree_) tree_->begin(kind, ray, depth, weight);
     Hit hit;
+    const bool found = context_.intersector.nearest(ray, 0.0f, hit, counters_.intersections);
+    return follow(ray, found ? &hit : nullptr, depth, kind, weight);
+  }
+
+  // The ray once its nearest hit is known (nullptr: none): Shade there, or
+  // the background.
+  Color follow(const Ray& ray, const Hit* hit, int depth, RayKind kind, const Color& weight) {
+    if (tree_) tree_->begin(kind, ray, depth, weight);
     Color color = context_.scene.image.background;
-    if (context_.intersector.nearest(ray, 0.0f, hit, counters_.intersections)) {
-      const Material& material = context_.scene.materialOf(*hit.shape);
-      const ShadingFrame frame = shadingFrame(ray, hit, material);
+    if (hit) {
+      const Material& material = context_.scene.materialOf(*hit->shape);
+      const ShadingFrame frame = shadingFrame(ray, *hit, material);
       if (depth == 1)
-        seen_ = {Color(0.0f), hit.t * glm::length(ray.direction), frame.surface.normal};
-      if (tree_) tree_->hit(hit, frame.surface);
+        seen_ = {Color(0.0f), hit->t * glm::length(ray.direction), frame.surface.normal};
+      if (tree_) tree_->hit(*hit, frame.surface);
       color = shade(frame, material, depth);
     }
     if (tree_) tree_->end(color);
@@ -175,25 +182,26 @@ class Recursion {
   SampleResult seen_;
 };
 
-// Whitted's one ray for every choice: the light's centre, the ideal
-// direction.
-class SingleRayChoices final : public PathChoices {
- public:
-  LightSample aimAt(const Light& light, const Vec3& point, int) override {
-    return light.illuminate(point);
-  }
-  Vec3 scatter(const Vec3& ideal, float, const Vec3&, int) override { return ideal; }
-};
-
 }  // namespace
+
+LightSample SingleRayChoices::aimAt(const Light& light, const Vec3& point, int) {
+  return light.illuminate(point);
+}
 
 SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathChoices& choices,
                           TraceCounters& counters, RayTree* tree) {
   ++counters.primaryRays;
+  Hit hit;
+  const bool found = context.intersector.nearest(ray, 0.0f, hit, counters.intersections);
+  return shadeFirstHit(context, ray, found ? &hit : nullptr, choices, counters, tree);
+}
+
+SampleResult shadeFirstHit(const TracingContext& context, const Ray& ray, const Hit* hit,
+                           PathChoices& choices, TraceCounters& counters, RayTree* tree) {
   std::optional<RayTreeBuilder> builder;
   if (tree) builder.emplace(context.scene, *tree);
   Recursion recursion(context, choices, counters, builder ? &*builder : nullptr);
-  const Color color = recursion.trace(ray, 1, RayKind::Primary, Color(1.0f));
+  const Color color = recursion.follow(ray, hit, 1, RayKind::Primary, Color(1.0f));
   if (tree) tree->color = color;
   SampleResult result = recursion.seen();
   result.color = color;

@@ -32,6 +32,14 @@ class PathChoices {
   ~PathChoices() = default;
 };
 
+// Whitted's one ray for every choice: the light's centre, the ideal
+// direction.
+class SingleRayChoices final : public PathChoices {
+ public:
+  LightSample aimAt(const Light& light, const Vec3& point, int depth) override;
+  Vec3 scatter(const Vec3& ideal, float, const Vec3&, int) override { return ideal; }
+};
+
 // What the recursion needs besides the ray: the scene, the structure that
 // finds what rays hit, and the longest path (the primary ray counting 1).
 struct TracingContext {
@@ -45,6 +53,13 @@ struct TracingContext {
 // when there is one.
 SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathChoices& choices,
                           TraceCounters& counters, RayTree* tree = nullptr);
+
+// The same once the primary ray's nearest hit is known (nullptr: it hits
+// nothing), found by other means than the ray's search (the hybrid
+// algorithm's item buffer): Shade, and the rays it spawns. The primary ray is
+// not counted.
+SampleResult shadeFirstHit(const TracingContext& context, const Ray& ray, const Hit* hit,
+                           PathChoices& choices, TraceCounters& counters, RayTree* tree = nullptr);
 
 // Traces the sample at a raster position ((i + 0.5, j + 0.5) is pixel (i,
 // j)'s centre), recording its rays in `tree` unless that is null.

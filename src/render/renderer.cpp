@@ -10,6 +10,8 @@ std::string_view toString(Family family) {
       return "visible surface";
     case Family::RayTracing:
       return "ray tracing";
+    case Family::Hybrid:
+      return "hybrid";
   }
   return "?";
 }

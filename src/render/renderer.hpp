@@ -44,8 +44,9 @@ class RenderObserver : public Progress {
 };
 
 // The two families of algorithms: those that project polygons and find the
-// one visible at each pixel (raster/), and those that trace rays (ray/).
-enum class Family { VisibleSurface, RayTracing };
+// one visible at each pixel (raster/), and those that trace rays (ray/); and
+// the algorithms that join them (hybrid/).
+enum class Family { VisibleSurface, RayTracing, Hybrid };
 
 // The settings of RenderSettings that only some algorithms read.
 enum class Option { Shading, Culling, Tessellation, PlaneSize, Shadows, Accel, MaxDepth };
@@ -80,6 +81,10 @@ struct AlgorithmDescription {
   std::vector<std::string_view> buffers;  // the auxiliary buffers it writes: "depth", ...
   std::vector<Option> options;            // the settings it reads beyond the image's
   std::vector<Effect> effects;
+  // The algorithm whose image this one renders by other means, or "": `rise
+  // compare` counts the pixels where the two differ and the intersection
+  // tests this one spared.
+  std::string_view sameImageAs = {};
 
   bool writes(std::string_view buffer) const;
   bool reads(Option option) const;

@@ -40,7 +40,8 @@ struct PixelWrite {
 // A shape drawn over the image, in raster coordinates (pixel (i, j) covers
 // [i, i+1) x [j, j+1)): a rectangle (two corners), a polygon, a segment or a
 // point. `role` says what it is, in a word the player colours by: "window",
-// "polygon", "other", "behind", "front", "span", "edge", "tile".
+// "polygon", "other", "behind", "front", "span", "edge", "tile", "rays",
+// "fallback".
 struct StepShape {
   enum class Kind { Rectangle, Polygon, Segment, Point };
   Kind kind;

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/byte_encoding.hpp"
 
 namespace rise {
 namespace {
@@ -144,6 +147,27 @@ std::string html(const std::string& sceneName, const std::vector<ComparedRender>
   return out.str();
 }
 
+int pixelsDiffering(const Image& a, const Image& b, Encoding encoding) {
+  const ByteEncoder& toByte = byteEncoder(encoding);
+  int differing = 0;
+  for (int y = 0; y < a.height(); ++y) {
+    for (int x = 0; x < a.width(); ++x) {
+      bool differs = false;
+      for (int channel = 0; channel < 3; ++channel)
+        differs |= std::abs(toByte(a.at(x, y)[channel]) - toByte(b.at(x, y)[channel])) > 2;
+      differing += differs ? 1 : 0;
+    }
+  }
+  return differing;
+}
+
+// "ray-tracing" -> "ray_tracing", as counters are named.
+std::string counterWord(std::string_view name) {
+  std::string word(name);
+  std::replace(word.begin(), word.end(), '-', '_');
+  return word;
+}
+
 }  // namespace
 
 // Every statistic any algorithm reported, in the order they first appear.
@@ -158,6 +182,24 @@ std::vector<std::string> statisticNames(const std::vector<ComparedRender>& rende
 std::string statisticCell(const Stats& stats, const std::string& name) {
   const double* value = findValue(stats, name);
   return value != nullptr ? formatNumber(*value) : "";
+}
+
+void addSameImageCounters(std::vector<ComparedRender>& renders, Encoding encoding) {
+  for (ComparedRender& render : renders) {
+    const std::string_view other = render.algorithm->sameImageAs;
+    const auto reference = std::find_if(renders.begin(), renders.end(), [&](const auto& candidate) {
+      return !other.empty() && candidate.algorithm->name == other;
+    });
+    if (reference == renders.end()) continue;
+    const Stats& theirs = reference->result.stats;
+    Stats& ours = render.result.stats;
+    ours.add("pixels_differing_from_" + counterWord(other),
+             pixelsDiffering(render.result.image, reference->result.image, encoding));
+    ours.add("intersection_tests_saved",
+             theirs.value("intersection_tests") - ours.value("intersection_tests"));
+    ours.add("speedup_over_" + counterWord(other),
+             theirs.value("render_seconds") / ours.value("render_seconds"));
+  }
 }
 
 std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& directory,

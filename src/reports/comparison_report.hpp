@@ -28,6 +28,14 @@ std::vector<std::string> statisticNames(const std::vector<ComparedRender>& rende
 // numbers in full, others to four significant digits.
 std::string statisticCell(const Stats& stats, const std::string& name);
 
+// Beside each algorithm that renders another's image by other means
+// (AlgorithmDescription::sameImageAs), when that one was rendered too: the
+// pixels where the two images, stored with `encoding`, differ by more than 2
+// of the 256 levels in some channel, "pixels_differing_from_<other>"; the
+// intersection tests it saved, "intersection_tests_saved"; and how many times
+// faster it was, "speedup_over_<other>".
+void addSameImageCounters(std::vector<ComparedRender>& renders, Encoding encoding);
+
 // Writes, into `directory`, each algorithm's image (<algorithm>.png), the
 // times and counters of all of them as results.csv (one row an algorithm)
 // and results.md (one row a counter, one column an algorithm, for reading),

@@ -17,9 +17,10 @@ int Tessellation::addVertex(const SurfaceVertex& vertex) {
   return static_cast<int>(vertices.size()) - 1;
 }
 
-void Tessellation::addTriangle(int a, int b, int c) {
+void Tessellation::addTriangle(int a, int b, int c, int primitive) {
   if (a == b || b == c || c == a) return;
   triangles.push_back({a, b, c});
+  primitives.push_back(primitive);
 }
 
 void Tessellation::addConvexPolygon(std::span<const int> corners) {

@@ -56,6 +56,11 @@ struct SurfaceVertex {
 struct Tessellation {
   std::vector<SurfaceVertex> vertices;
   std::vector<std::array<int, 3>> triangles;
+  // For each triangle, the primitive of the shape it lies on (the argument of
+  // Shape::intersectPrimitive): a mesh's own triangle, 0 for a shape that is
+  // one primitive. A ray through a triangle's pixels may then be tested
+  // against the exact surface under it alone.
+  std::vector<int> primitives;
   // The triangles close around a solid: seen from outside it, a triangle
   // facing away from the eye is always hidden behind one facing it, so it can
   // be culled. Open surfaces (planes, polygons, most meshes) are seen from
@@ -70,8 +75,9 @@ struct Tessellation {
   Mat4 projectionPlacement{1.0f};
 
   int addVertex(const SurfaceVertex& vertex);
-  // A triangle; one with a repeated corner (a sphere's pole) is left out.
-  void addTriangle(int a, int b, int c);
+  // A triangle on the shape's `primitive`; one with a repeated corner (a
+  // sphere's pole) is left out.
+  void addTriangle(int a, int b, int c, int primitive = 0);
   // A planar convex polygon, as the fan of triangles from its first corner.
   void addConvexPolygon(std::span<const int> corners);
 };

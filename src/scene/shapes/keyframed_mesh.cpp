@@ -97,7 +97,7 @@ void KeyframedMesh::tessellate(const TessellationSettings& settings, Tessellatio
       const SurfacePoint point = pointOn(triangle, settings.time, kCornerBarycentrics[corner]);
       corners[corner] = out.addVertex({point.position, point.shadingNormal, point.uv});
     }
-    out.addTriangle(corners[0], corners[1], corners[2]);
+    out.addTriangle(corners[0], corners[1], corners[2], triangle);
   }
 }
 

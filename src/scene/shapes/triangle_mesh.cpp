@@ -92,17 +92,22 @@ void TriangleMesh::tessellate(const TessellationSettings&, Tessellation& out) co
   if (!normals_.empty()) {
     out.vertices.reserve(vertices_.size());
     out.triangles.reserve(triangles_.size());
+    out.primitives.reserve(triangles_.size());
     for (std::size_t i = 0; i < vertices_.size(); ++i)
       out.addVertex({vertices_[i], normals_[i], uvs_.empty() ? Vec2(0.0f) : uvs_[i]});
-    for (const auto& [a, b, c] : triangles_) out.addTriangle(a, b, c);
+    for (int triangle = 0; triangle < primitiveCount(); ++triangle) {
+      const auto& [a, b, c] = triangles_[triangle];
+      out.addTriangle(a, b, c, triangle);
+    }
   } else {
-    for (const auto& triangle : triangles_) {
+    for (int triangle = 0; triangle < primitiveCount(); ++triangle) {
+      const auto& corners = triangles_[triangle];
       const Vec3 normal =
-          windingNormal(vertices_[triangle[0]], vertices_[triangle[1]], vertices_[triangle[2]]);
+          windingNormal(vertices_[corners[0]], vertices_[corners[1]], vertices_[corners[2]]);
       const int first = static_cast<int>(out.vertices.size());
-      for (int index : triangle)
+      for (int index : corners)
         out.addVertex({vertices_[index], normal, uvs_.empty() ? Vec2(0.0f) : uvs_[index]});
-      out.addTriangle(first, first + 1, first + 2);
+      out.addTriangle(first, first + 1, first + 2, triangle);
     }
   }
   out.enclosesSolid = enclosesSolid(vertices_, triangles_);

@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# The hybrid scan-line / ray-tracing algorithm beside Whitted's ray tracer
+# with the BVH, on the same scenes, with 1 and with 16 jittered samples a
+# pixel: the report's model scene (examples/md2.yaml), the classic scene, a
+# mesh of 1,000,000 triangles over a mirror floor (bench/raster/make_mesh.py),
+# and the spheres scene of the POV-Ray benchmark. For each, the table shows
+# both times, their ratio, the share of Whitted's rays that were primary rays
+# (the work the item buffer can take over), the hybrid's fallback pixels and
+# the time of each of its two passes.
+set -euo pipefail
+shopt -s inherit_errexit
+
+usage() {
+  cat <<EOF
+usage: bench/hybrid/run.sh [--runs N] [--threads N] [--out DIR] [BUILD_DIR]
+  BUILD_DIR     RISE's build directory, holding the rise executable (default: build)
+  --runs N      render each row N times and keep the best (default: 3)
+  --threads N   worker threads (default: 2)
+  --out DIR     where the mesh, images, statistics and logs go (default: out/bench-hybrid)
+EOF
+}
+
+# shellcheck source=bench/common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
+
+runs=3 threads=2 out=out/bench-hybrid build=build
+declare -A value_options=([--runs]=runs [--threads]=threads [--out]=out) flag_options=()
+start_benchmark "$@"
+require_count --runs "$runs" 1
+require_count --threads "$threads" 1
+
+mesh="$out/bumpy-sphere.ply"
+[[ -f "$mesh" ]] || python3 bench/raster/make_mesh.py "$mesh" >&2
+cp bench/hybrid/million-mirror.yaml "$out/"
+
+# One value of a render's statistics JSON, with `decimals` places.
+stat() {
+  python3 -c 'import json, sys; print("%.*f" % (int(sys.argv[3]), json.load(open(sys.argv[1]))[sys.argv[2]]))' \
+    "$1" "$2" "$3" 2>/dev/null || die "no $2 in $1"
+}
+
+# Renders one row $runs times ($1: a file name, then rise's options); prints
+# the best render_seconds and leaves the statistics of the best run in
+# $out/$1.json.
+best_render() {
+  local name="$1" run seconds best=""
+  shift
+  for ((run = 1; run <= runs; ++run)); do
+    "$build/rise" render -o "$out/$name.png" --threads "$threads" --stats "$out/$name.run.json" \
+      "$@" >"$out/$name.log" 2>&1 || die "RISE failed; see $out/$name.log"
+    seconds="$(stat "$out/$name.run.json" render_seconds 4)"
+    if [[ -z "$best" ]] || awk -v a="$seconds" -v b="$best" 'BEGIN { exit !(a < b) }'; then
+      best="$seconds"
+      mv "$out/$name.run.json" "$out/$name.json"
+    fi
+  done
+  rm -f "$out/$name.run.json"
+  echo "$best"
+}
+
+share() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.0f%%", 100 * a / b }'; }
+
+readonly SCENES=(
+  "md2|examples/md2.yaml"
+  "classic|examples/classic.yaml"
+  "1M triangles, mirror floor|$out/million-mirror.yaml"
+  "spheres|examples/spheres.yaml"
+)
+
+echo "Hybrid against Whitted (BVH), $threads threads, best of $runs; images and statistics in $out" >&2
+lines=()
+for row in "${SCENES[@]}"; do
+  IFS='|' read -r label scene <<<"$row"
+  name="$(basename "$scene" .yaml)"
+  for samples in 1 16; do
+    sampling=()
+    ((samples > 1)) && sampling=(--samples "$samples" --pattern jittered)
+    whitted="$(best_render "$name-$samples-ray-tracing" "$scene" -a ray-tracing "${sampling[@]}")"
+    hybrid="$(best_render "$name-$samples-hybrid" "$scene" -a hybrid "${sampling[@]}")"
+    w="$out/$name-$samples-ray-tracing.json" h="$out/$name-$samples-hybrid.json"
+    lines+=("$(printf '| %-26s | %7s | %11s | %10s | %6s | %7s | %9s | %9s | %8s |' "$label" \
+      "$samples" "$whitted" "$hybrid" "$(ratio "$whitted" "$hybrid")" \
+      "$(share "$(stat "$w" primary_rays 0)" "$(stat "$w" rays 0)")" \
+      "$(stat "$h" fallback_pixels 0)" "$(stat "$h" item_buffer_seconds 3)" \
+      "$(stat "$h" ray_pass_seconds 3)")")
+    echo "  $label, $samples samples: Whitted $whitted s, hybrid $hybrid s" >&2
+  done
+done
+
+echo
+printf '| %-26s | %7s | %11s | %10s | %6s | %7s | %9s | %9s | %8s |\n' "scene" "samples" \
+  "Whitted (s)" "hybrid (s)" "W / h" "primary" "fallbacks" "pass 1 (s)" "pass 2 (s)"
+printf '|%s|%s|%s|%s|%s|%s|%s|%s|%s|\n' "----------------------------" "---------" \
+  "-------------" "------------" "--------" "---------" "-----------" "-----------" "----------"
+printf '%s\n' "${lines[@]}"
