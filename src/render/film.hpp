@@ -61,6 +61,9 @@ class FilmTile {
   // float sum would round into the next pixel.
   void addSample(const glm::ivec2& pixel, const Vec2& offset, const Color& color);
 
+  // The pixels its samples reach, margin included.
+  PixelRect reach() const { return {x0_, y0_, x1_, y1_}; }
+
  private:
   friend class Film;
   FilmTile(const ReconstructionFilter& filter, int x0, int y0, int x1, int y1);
