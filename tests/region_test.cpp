@@ -55,7 +55,13 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(Case{"classic.yaml", SamplePattern::None, FilterKind::Box, 1},
                     Case{"soft-shadows.yaml", SamplePattern::Jittered, FilterKind::Gaussian, 4},
                     Case{"spheres.yaml", SamplePattern::Adaptive, FilterKind::Box, 16},
-                    Case{"motion-blur.yaml", SamplePattern::Random, FilterKind::Tent, 3}));
+                    Case{"motion-blur.yaml", SamplePattern::Random, FilterKind::Tent, 3}),
+    [](const testing::TestParamInfo<Case>& info) {
+      std::string name = info.param.scene.substr(0, info.param.scene.find('.'));
+      for (char& c : name)
+        if (c == '-') c = '_';
+      return name;
+    });
 
 TEST(RegionSettings, ARegionOutsideTheImageIsRefusedWithItsSize) {
   const Scene scene = loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/classic.yaml");
