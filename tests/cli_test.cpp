@@ -191,4 +191,76 @@ TEST_F(RiseCommand, SaysWhichStructuresABuildWithoutEmbreeHas) {
 }
 
 }  // namespace
+TEST_F(RiseCommand, ExplainWritesAPageOfTheStepsWithAFramePerStep) {
+  const CommandResult result = runRise("explain " + example("classic.yaml") +
+                                       " -a scanline --width 40 -o " + file("steps").string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  for (const char* written : {"index.html", "steps.json", "image.png", "frames/0001.png"})
+    EXPECT_TRUE(fs::exists(file("steps") / written)) << written;
+  std::ifstream stepsFile(file("steps") / "steps.json");
+  const nlohmann::json steps = nlohmann::json::parse(stepsFile);
+  EXPECT_EQ(steps["algorithm"], "scanline");
+  EXPECT_FALSE(steps["steps"].empty());
+}
+
+TEST_F(RiseCommand, ExplainDrawsTheStepsShapesOnFramesWhenAsked) {
+  const CommandResult result =
+      runRise("explain " + example("classic.yaml") +
+              " -a area-subdivision --width 40 --shapes -o " + file("steps").string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  // Warnock's first window is the whole screen, outlined in the window's colour.
+  const Image frame = readImage(file("steps") / "frames/0001.png");
+  const Image withShapes = readImage(file("steps") / "shapes/0001.png");
+  const Color windowColour(1.0f, linearFromSrgb(204.0f / 255.0f), 0.0f);
+  for (const auto& [x, y] : {std::pair{0, 0}, std::pair{39, 29}, std::pair{20, 0}}) {
+    EXPECT_NEAR(withShapes.at(x, y).g, windowColour.g, 1e-3f) << x << "," << y;
+    EXPECT_NEAR(withShapes.at(x, y).b, 0.0f, 1e-3f) << x << "," << y;
+  }
+  EXPECT_EQ(withShapes.at(20, 15), frame.at(20, 15));  // inside, the frame as it was
+}
+
+TEST_F(RiseCommand, ExplainRefusesARegionOutsideTheImage) {
+  const CommandResult result =
+      runRise("explain " + example("classic.yaml") + " --width 40 --region 100,100,5,5 -o " +
+              file("steps").string());
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("--region 100,100,5,5"), std::string::npos) << result.output;
+  EXPECT_FALSE(fs::exists(file("steps")));
+}
+
+TEST_F(RiseCommand, InspectPrintsTheRayTreeOfAGlassPixel) {
+  const CommandResult result =
+      runRise("inspect " + example("classic.yaml") + " --width 64 --pixel 32,24 -o " +
+              file("tree.json").string() + " --picture " + file("tree.svg").string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find("refraction"), std::string::npos) << result.output;
+  EXPECT_TRUE(fs::exists(file("tree.json")));
+  EXPECT_TRUE(fs::exists(file("tree.svg")));
+}
+
+TEST_F(RiseCommand, InspectRefusesAVisibleSurfaceAlgorithmAndAPixelOutside) {
+  const CommandResult raster =
+      runRise("inspect " + example("classic.yaml") + " --width 64 --pixel 1,1 -a z-buffer");
+  EXPECT_EQ(raster.status, 2);
+  EXPECT_NE(raster.output.find("traces no rays"), std::string::npos) << raster.output;
+  const CommandResult notSvg =
+      runRise("inspect " + example("classic.yaml") + " --width 64 --pixel 1,1 --picture " +
+              file("tree.png").string());
+  EXPECT_EQ(notSvg.status, 2);
+  EXPECT_NE(notSvg.output.find("ending in .svg"), std::string::npos) << notSvg.output;
+  const CommandResult outside =
+      runRise("inspect " + example("classic.yaml") + " --width 64 --pixel 64,0");
+  EXPECT_EQ(outside.status, 2);
+  EXPECT_NE(outside.output.find("from 0,0 to 63,47"), std::string::npos) << outside.output;
+}
+
+TEST_F(RiseCommand, ManualSaysWhereTheBookIsOrHowToBuildIt) {
+  const CommandResult result = runRise("manual --print-path");
+  if (result.status == 0)
+    EXPECT_NE(result.output.find("index.html"), std::string::npos) << result.output;
+  else
+    EXPECT_NE(result.output.find("--target manual"), std::string::npos) << result.output;
+  EXPECT_EQ(runRise("manual --language fr").status, 2);
+}
+
 }  // namespace rise

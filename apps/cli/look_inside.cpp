@@ -20,6 +20,7 @@ struct ExplainOptions {
   std::filesystem::path directory;
   std::vector<int> region;  // x, y, width, height; empty: the whole image
   int every = 0;
+  bool framesWithShapes = false;
 };
 
 struct InspectOptions {
@@ -36,12 +37,11 @@ std::optional<PixelRect> regionOf(const std::vector<int>& values, const RenderSe
   const PixelRect region{values[0], values[1], values[0] + values[2], values[1] + values[3]};
   const PixelRect image{0, 0, settings.width, settings.height};
   if (values[2] <= 0 || values[3] <= 0 || region.intersection(image).isEmpty())
-    throw SettingsError(
-        "--region " +
-        joined(std::vector<std::string>{std::to_string(values[0]), std::to_string(values[1]),
-                                        std::to_string(values[2]), std::to_string(values[3])}) +
-        ": expected a rectangle X,Y,W,H with W and H positive that overlaps the " +
-        std::to_string(settings.width) + "x" + std::to_string(settings.height) + " image");
+    throw SettingsError("--region " + std::to_string(values[0]) + "," + std::to_string(values[1]) +
+                        "," + std::to_string(values[2]) + "," + std::to_string(values[3]) +
+                        ": expected a rectangle X,Y,W,H with W and H positive that overlaps the " +
+                        std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                        " image");
   return region;
 }
 
@@ -63,7 +63,8 @@ int explain(const ExplainOptions& options) {
   const std::filesystem::path directory =
       options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
   try {
-    writeStepPlayer(directory, {job.scene, renderer.description(), result, recorder});
+    writeStepPlayer(
+        directory, {job.scene, renderer.description(), result, recorder, options.framesWithShapes});
   } catch (const std::exception& error) {
     std::cerr << "rise: " << error.what() << "\n";
     return kExitOutputError;
@@ -79,6 +80,11 @@ int inspect(const InspectOptions& options) {
     std::cerr << "rise: -a " << options.algorithm
               << ": a visible-surface algorithm traces no rays; expected a ray tracer (`rise "
                  "explain` shows the steps of the others)\n";
+    return kExitBadInput;
+  }
+  if (!options.picture.empty() && options.picture.extension() != ".svg") {
+    std::cerr << "rise: --picture " << options.picture.string()
+              << ": expected a file name ending in .svg\n";
     return kExitBadInput;
   }
   std::variant<Job, int> prepared = prepare(options.settings);
@@ -144,6 +150,10 @@ std::function<std::optional<int>()> addLookInsideCommands(CLI::App& app) {
       ->add_option("--every", explainOptions->every,
                    "Show every Nth step (default: as many as keep about 200)")
       ->check(CLI::PositiveNumber);
+  explainCommand->add_flag(
+      "--shapes", explainOptions->framesWithShapes,
+      "Also write shapes/NNNN.png: each frame with the step's shapes (windows, "
+      "spans, edges) drawn on it, for slides and figures");
 
   auto inspectOptions = std::make_shared<InspectOptions>();
   CLI::App* inspectCommand = app.add_subcommand(

@@ -15,6 +15,7 @@
 #include "io/scene_error.hpp"
 #include "job.hpp"
 #include "look_inside.hpp"
+#include "manual_command.hpp"
 #include "progress_bar.hpp"
 #include "render/buffer_images.hpp"
 #include "settings_options.hpp"
@@ -228,6 +229,7 @@ int run(int argc, char** argv) {
       app.add_subcommand("algorithms", "List the algorithms, each with its citation");
   const auto runLookInside = addLookInsideCommands(app);
   const auto runMerge = addMergeCommand(app);
+  const auto runManual = addManualCommand(app);
 
   try {
     app.parse(argc, argv);
@@ -239,6 +241,7 @@ int run(int argc, char** argv) {
   if (*validateCommand) return validate(validatePath);
   if (const std::optional<int> status = runLookInside()) return *status;
   if (const std::optional<int> status = runMerge()) return *status;
+  if (const std::optional<int> status = runManual()) return *status;
   if (*algorithmsCommand) listAlgorithms();
   return 0;
 }

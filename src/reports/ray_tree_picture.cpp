@@ -1,8 +1,11 @@
 #include "reports/ray_tree_picture.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -14,8 +17,35 @@
 namespace rise {
 namespace {
 
-constexpr int kSideWidth = 480;
-constexpr int kSideHeight = 360;
+// The view from beside the rays is as tall as the camera's, at 4:3.
+glm::ivec2 sideSizeFor(const RenderSettings& settings) {
+  return {std::max(4 * settings.height / 3, 1), settings.height};
+}
+
+// The PNG files are kept inside the SVG as well, so that the picture shows
+// wherever it is opened, also as an <img> of a web page, which loads nothing
+// an SVG names.
+std::string base64(const std::string& bytes) {
+  static constexpr char kDigits[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string text;
+  text.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::size_t count = std::min<std::size_t>(3, bytes.size() - i);
+    std::uint32_t group = 0;
+    for (std::size_t k = 0; k < 3; ++k)
+      group = (group << 8) | (k < count ? static_cast<std::uint8_t>(bytes[i + k]) : 0u);
+    for (std::size_t k = 0; k < 4; ++k)
+      text += k <= count ? kDigits[(group >> (18 - 6 * k)) & 63] : '=';
+  }
+  return text;
+}
+
+std::string dataUriOf(const std::filesystem::path& png) {
+  std::ifstream file(png, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  return "data:image/png;base64," + base64(bytes);
+}
 
 // A ray as a segment in the world, from its origin to where it ended.
 struct Segment {
@@ -113,7 +143,7 @@ Camera sideCamera(const Camera& camera, const std::vector<RayTree>& trees) {
       high = glm::max(high, ray.point);
     }
   }
-  const ViewFrame view(camera, kSideWidth, kSideHeight);
+  const ViewFrame view(camera, 4, 3);
   const Vec3 middle = 0.5f * (low + high);
   const float size = std::max(glm::length(high - low), 1e-3f);
   Camera side = camera;
@@ -138,10 +168,11 @@ void writeRayTreePicture(const std::filesystem::path& svg, Scene& scene,
   const ViewFrame view(scene.camera, settings.width, settings.height);
   const std::vector<Segment> segments = segmentsOf(trees, extentOf(trees, scene.camera.position));
   const Camera besideRays = sideCamera(scene.camera, trees);
-  const ViewFrame sideView(besideRays, kSideWidth, kSideHeight);
+  const glm::ivec2 sideSize = sideSizeFor(settings);
+  const ViewFrame sideView(besideRays, sideSize.x, sideSize.y);
   RenderSettings sideSettings = settings;
-  sideSettings.width = kSideWidth;
-  sideSettings.height = kSideHeight;
+  sideSettings.width = sideSize.x;
+  sideSettings.height = sideSize.y;
   sideSettings.sampling = {};
   const Camera camera = std::exchange(scene.camera, besideRays);
   RenderObserver nobody;
@@ -151,10 +182,11 @@ void writeRayTreePicture(const std::filesystem::path& svg, Scene& scene,
 
   std::ostringstream out;
   const int gap = 12;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << settings.width + gap + kSideWidth
-      << "\" height=\"" << std::max(settings.height, kSideHeight) << "\">\n";
-  drawView(out, view, cameraImage, 0.0f, segments);
-  drawView(out, sideView, sideImage, static_cast<float>(settings.width + gap), segments);
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << settings.width + gap + sideSize.x
+      << "\" height=\"" << settings.height << "\">\n";
+  drawView(out, view, dataUriOf(svg.parent_path() / cameraImage), 0.0f, segments);
+  drawView(out, sideView, dataUriOf(svg.parent_path() / sideImage),
+           static_cast<float>(settings.width + gap), segments);
   if (const auto eye = project(sideView, scene.camera.position))
     out << "<circle cx=\"" << settings.width + gap + eye->x << "\" cy=\"" << eye->y
         << "\" r=\"4\" fill=\"none\" stroke=\"#ffffff\"/>\n";

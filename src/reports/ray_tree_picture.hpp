@@ -1,7 +1,7 @@
 // A pixel's ray trees as a picture a class can look at: on the left the scene
 // seen from the camera with the rays drawn over it, on the right the scene
-// seen from beside the rays, where their bounces show. An SVG file, with the
-// two renders beside it as PNG files.
+// seen from beside the rays, where their bounces show. An SVG file that holds
+// the two renders, which are also written beside it as PNG files.
 #pragma once
 
 #include <filesystem>

@@ -1,5 +1,6 @@
 #include "reports/ray_tree_text.hpp"
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -14,7 +15,8 @@ std::string numbers(std::initializer_list<float> values) {
   out << std::setprecision(4) << "(";
   const char* separator = "";
   for (float value : values) {
-    out << separator << value;
+    // What rounding leaves of a zero (1e-43) reads as a zero.
+    out << separator << (std::abs(value) < 1e-7f ? 0.0f : value);
     separator = ", ";
   }
   out << ")";

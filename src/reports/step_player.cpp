@@ -12,6 +12,7 @@
 #include "reports/step_json.hpp"
 #include "reports/step_player_html.hpp"
 #include "reports/step_replay.hpp"
+#include "reports/step_shapes.hpp"
 
 namespace rise {
 namespace {
@@ -48,6 +49,12 @@ int keptEvery(const StepRecorder& recorder, std::size_t recorded, std::size_t ke
   return kept == 0 ? 1 : static_cast<int>(std::ceil(static_cast<double>(recorded) / kept));
 }
 
+nlohmann::ordered_json shapeColoursJson() {
+  nlohmann::ordered_json colours = nlohmann::ordered_json::object();
+  for (const auto& [role, colour] : shapeColours()) colours[role] = colour;
+  return colours;
+}
+
 }  // namespace
 
 void writeStepPlayer(const std::filesystem::path& directory, const StepPlayerInput& input) {
@@ -67,6 +74,12 @@ void writeStepPlayer(const std::filesystem::path& directory, const StepPlayerInp
     replay.apply(steps[i]);
     const std::string frame = frameName("frames", i);
     writeImage(replay.image(), directory / frame);
+    if (input.framesWithShapes) {
+      Image withShapes = replay.image();
+      drawShapes(withShapes, steps[i].shapes);
+      std::filesystem::create_directories(directory / "shapes");
+      writeImage(withShapes, directory / frameName("shapes", i));
+    }
     std::string depthFrame;
     if (replay.hasDepths()) {
       depthFrame = frameName("depth", i);
@@ -91,7 +104,8 @@ void writeStepPlayer(const std::filesystem::path& directory, const StepPlayerInp
   writeText(directory / "steps.json", json);
   const nlohmann::ordered_json about = {{"algorithm", input.algorithm.name},
                                         {"summary", input.algorithm.summary},
-                                        {"citation", input.algorithm.citation}};
+                                        {"citation", input.algorithm.citation},
+                                        {"colours", shapeColoursJson()}};
   std::string page = kStepPlayerHtml;
   page = replaced(page, "%%TITLE%%", std::string(input.algorithm.name) + " step by step");
   page = replaced(page, "%%STEPS%%", forScript(json));

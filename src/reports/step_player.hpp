@@ -7,7 +7,9 @@
 //                     previous, next, play, pause, speed and a slider
 //   steps.json        the steps (reports/step_json.hpp gives the schema)
 //   frames/NNNN.png   the image after each step shown; depth/NNNN.png the
-//                     depth buffer, for the algorithms that keep one
+//                     depth buffer, for the algorithms that keep one;
+//                     shapes/NNNN.png, when asked for, the frame with the
+//                     step's shapes drawn on it
 //   image.png, <buffer>.png   the render's image and auxiliary buffers
 #pragma once
 
@@ -22,6 +24,7 @@ struct StepPlayerInput {
   const AlgorithmDescription& algorithm;
   const RenderResult& result;
   const StepRecorder& recorder;
+  bool framesWithShapes = false;
 };
 
 // Writes the player into `directory`, made if missing. Throws ImageFileError

@@ -68,13 +68,37 @@ def check_page(page, blocks, repository, rise, root):
     return passed, failures
 
 
+COMMAND_REFERENCE = "reference/command-line"
+
+
+def commands_of(rise):
+    """The commands `rise --help` lists under "Subcommands:", one a line."""
+    help_text = subprocess.run([rise, "--help"], capture_output=True, text=True, check=True).stdout
+    listed = help_text.split("Subcommands:", 1)[1] if "Subcommands:" in help_text else ""
+    return [line.split()[0] for line in listed.splitlines() if line.strip()]
+
+
+def check_command_reference(pages, rise):
+    shown = {block.get("script") for block in pages.get(COMMAND_REFERENCE, [])}
+    failures, passed = [], 0
+    for command in commands_of(rise):
+        if f"build/rise {command} --help" in shown:
+            passed += 1
+        else:
+            failures.append(
+                f"{COMMAND_REFERENCE}.rst: `rise {command}` has no section showing "
+                f"`build/rise {command} --help`: every command `rise --help` lists has one"
+            )
+    return passed, failures
+
+
 def main():
     options = parse_options(__doc__, "manifest", "rise")
     manifest = json.loads(Path(options.manifest).read_text())
     repository = Path(manifest["repository"])
     rise = Path(options.rise).resolve()
 
-    passed, failures = 0, []
+    passed, failures = check_command_reference(manifest["pages"], rise)
     with tempfile.TemporaryDirectory(prefix="rise-manual-commands-") as root:
         for page, blocks in manifest["pages"].items():
             page_passed, page_failures = check_page(page, blocks, repository, rise, Path(root))

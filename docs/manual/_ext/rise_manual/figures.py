@@ -12,13 +12,16 @@ The argument is a `rise` command line. Where it does not say where to write
 cache. The picture shown is `{out}.png`, the auxiliary buffer `{out}.NAME.png`
 with `:buffer: NAME`, or any file the command makes with `:file:` (a command
 that writes a folder, such as a step recording, names a frame in it:
-`:file: {out}/frames/0012.png`). `:zoom: N` shows the picture N times its size
+`:file: {out}/frames/0012.png`); an SVG picture is shown with the PNG
+pictures it names written into it. `:zoom: N` shows the picture N times its size
 with its pixels kept square, for looking at pixels. Under the caption the
 figure prints the command that made it, so that a reader can make it too.
 All the options of Sphinx's `figure` (alt, width, align, name, ...) apply.
 """
 
+import base64
 import os
+import re
 import shutil
 import struct
 from pathlib import Path
@@ -40,6 +43,24 @@ def png_size(path):
     if len(header) < 24 or header[:8] != b"\x89PNG\r\n\x1a\n":
         raise ExtensionError(f"{path} is not a PNG image")
     return struct.unpack(">II", header[16:24])
+
+
+def self_contained(svg):
+    """The name of an SVG picture's copy with the PNG pictures it names
+    beside it (`rise inspect --picture` draws its rays over two views)
+    written into it: a browser shows an SVG in an <img> without loading any
+    file it names."""
+    return svg.with_name(svg.stem + ".inlined.svg")
+
+
+def write_self_contained(svg):
+    def data_uri(match):
+        named = svg.parent / match.group(1)
+        if not named.is_file():
+            raise ExtensionError(f"{svg} names {named}, which rise did not write")
+        return f'href="data:image/png;base64,{base64.b64encode(named.read_bytes()).decode()}"'
+
+    self_contained(svg).write_text(re.sub(r'href="([^":]+\.png)"', data_uri, svg.read_text()))
 
 
 class RiseFigure(Figure):
@@ -65,6 +86,8 @@ class RiseFigure(Figure):
         key = rise.key("\0".join(arguments), rise.scene_inputs(arguments))
         prefix = rise.cache / "figures" / key
         picture = Path(shown_file.replace(OUT, str(prefix)))
+        if picture.suffix == ".svg":
+            picture = self_contained(picture)
         if not picture.is_file():
             self._render(rise, arguments, prefix, what)
             if not picture.is_file():
@@ -103,5 +126,7 @@ class RiseFigure(Figure):
                 stale.unlink()
         prefix.parent.mkdir(parents=True, exist_ok=True)
         rise.run([word.replace(OUT, str(staging)) for word in arguments], what)
+        for svg in prefix.parent.glob(staging.name + "*.svg"):
+            write_self_contained(svg)
         for made in prefix.parent.glob(staging.name + "*"):
             made.rename(prefix.parent / made.name.replace(staging.name, prefix.name, 1))
