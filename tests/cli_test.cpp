@@ -1,6 +1,5 @@
 // End-to-end tests of the `rise` command: what a user types and sees.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <array>
 #include <cstdio>
@@ -15,36 +14,12 @@
 
 #include "algorithms/registry.hpp"
 #include "io/image_io.hpp"
-#include "support/temporary_folder_testing.hpp"
+#include "support/rise_command_testing.hpp"
 
 namespace rise {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct CommandResult {
-  int status;
-  std::string output;  // standard output and standard error together
-};
-
-CommandResult runRise(const std::string& arguments) {
-  const std::string command = std::string(RISE_EXECUTABLE) + " " + arguments + " 2>&1";
-  FILE* pipe = popen(command.c_str(), "r");
-  std::string output;
-  std::array<char, 4096> buffer;
-  while (std::fgets(buffer.data(), buffer.size(), pipe) != nullptr) output += buffer.data();
-  const int status = pclose(pipe);
-  return {WEXITSTATUS(status), output};
-}
-
-std::string example(const std::string& name) {
-  return std::string(RISE_SOURCE_DIR) + "/examples/" + name;
-}
-
-class RiseCommand : public TemporaryFolderTest {
- protected:
-  fs::path file(const std::string& name) const { return directory_ / name; }
-};
 
 TEST_F(RiseCommand, RendersTheClassicSceneWithStatsAndBuffers) {
   const CommandResult result = runRise(

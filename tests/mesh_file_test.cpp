@@ -167,7 +167,10 @@ TEST(MeshFile, CountsTheKeyframesOfAnMd2Model) {
 }
 
 TEST(MeshFile, Md2KeyframesInterpolateFromTheFirstToTheSecond) {
-  auto [start, end] = loadMd2Keyframes(kSydney, 0, 40);
+  const std::vector<MeshGeometry> poses = loadMd2Keyframes(kSydney, 40, 41);
+  ASSERT_EQ(poses.size(), 2u);
+  const MeshGeometry& start = poses[0];
+  const MeshGeometry& end = poses[1];
   const KeyframedMesh mesh(start, end, 0);
   // Triangle 100 alone, met along its normal from one unit away, at three
   // instants: its centre is where the keyframes put it, and halfway between.

@@ -351,7 +351,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "tab, or a value with ': ' that needs quotes?)"},
         BadScene{"not_a_map.yaml",
                  "not_a_map.yaml:2:1: the scene is a list of 2 items; expected a map with the "
-                 "keys image, camera, ambient, lights, materials, objects"},
+                 "keys image, camera, ambient, lights, materials, objects, animation"},
         BadScene{"two_documents.yaml",
                  "two_documents.yaml:5:1: a second YAML document (after '---'); expected the "
                  "scene file to hold one scene"},

@@ -9,6 +9,7 @@
 #include <variant>
 
 #include "algorithms/registry.hpp"
+#include "animation.hpp"
 #include "io/image_io.hpp"
 #include "io/scene_error.hpp"
 #include "job.hpp"
@@ -20,6 +21,7 @@
 #include "settings_options.hpp"
 #include "stats_report.hpp"
 #include "studio_command.hpp"
+#include "tiles.hpp"
 
 namespace rise::cli {
 namespace {
@@ -31,6 +33,7 @@ struct RenderOptions {
   std::filesystem::path statsPath;
   Encoding encoding = Encoding::Srgb;
   std::vector<std::string> buffers;
+  AnimationOptions animation;
 };
 
 struct CompareOptions {
@@ -73,24 +76,34 @@ int render(const RenderOptions& options, const CLI::App& command) {
   }
   std::variant<Job, int> prepared = prepare(options.settings);
   if (const int* status = std::get_if<int>(&prepared)) return *status;
-  const Job& job = std::get<Job>(prepared);
+  Job& job = std::get<Job>(prepared);
   noteUnreadOptions(command, algorithm);
 
-  const RenderResult result = renderWithProgress(renderer, job);
-  const std::filesystem::path output =
-      options.output.empty() ? defaultOutput(options.settings.scenePath, ".png") : options.output;
-  const RenderDescription description = describe(job, renderer.name());
-  try {
-    writeImage(result.image, output, options.encoding);
-    for (const std::string& name : options.buffers) writeBuffer(result, name, output);
-    if (!options.statsPath.empty()) writeStatsJson(options.statsPath, description, result.stats);
-  } catch (const std::exception& error) {
-    std::cerr << "rise: " << error.what() << "\n";
-    return kExitOutputError;
+  const std::optional<PixelRect>& tile = job.settings.region;
+  const FrameWriter write = [&](const RenderResult& result, const std::filesystem::path& output) {
+    const RenderDescription description = describe(job, renderer.name());
+    try {
+      writeImage(result.image, output, options.encoding);
+      for (const std::string& name : options.buffers) writeBuffer(result, name, output);
+      if (tile) writeTilePlace(output, job.settings, job.scene.source, renderer.name());
+      if (!options.statsPath.empty()) writeStatsJson(options.statsPath, description, result.stats);
+    } catch (const std::exception& error) {
+      std::cerr << "rise: " << error.what() << "\n";
+      return kExitOutputError;
+    }
+    printStats(std::cerr, description, result.stats);
+    std::cerr << "wrote " << output.string() << "\n";
+    return 0;
+  };
+  if (options.animation.requested()) {
+    const std::filesystem::path pattern =
+        options.output.empty() ? defaultFramePattern(options.settings.scenePath) : options.output;
+    return renderFrames(renderer, job, options.animation, pattern, write);
   }
-  printStats(std::cerr, description, result.stats);
-  std::cerr << "wrote " << output.string() << "\n";
-  return 0;
+  return write(renderWithProgress(renderer, job),
+               !options.output.empty() ? options.output
+               : tile                  ? defaultTileOutput(options.settings.scenePath, *tile)
+                                       : defaultOutput(options.settings.scenePath, ".png"));
 }
 
 int compare(const CompareOptions& options) {
@@ -156,17 +169,15 @@ std::vector<std::string> bufferNames() {
   return names;
 }
 
-CLI::CheckedTransformer encodings() {
-  return CLI::CheckedTransformer(
-      std::map<std::string, Encoding>{{"srgb", Encoding::Srgb}, {"linear", Encoding::Linear}},
-      CLI::ignore_case);
-}
-
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
   CLI::App* command = app.add_subcommand("render", "Render a scene file to an image");
   addSettingsOptions(*command, options.settings);
-  command->add_option("-o,--output", options.output,
-                      "Image to write: .png, .ppm or .exr (default: the scene's name, .png)");
+  addTileOption(*command, options.settings);
+  addAnimationOptions(*command, options.animation);
+  command->add_option(
+      "-o,--output", options.output,
+      "Image to write: .png, .ppm or .exr (default: the scene's name, .png); with --frames, "
+      "a pattern with the frame number: run_%04d.png");
   command->add_option("-a,--algorithm", options.algorithm, "Algorithm (see `rise algorithms`)")
       ->check(CLI::IsMember(algorithmNames()));
   command->add_option("--stats", options.statsPath, "Also write the time and counters as JSON");
@@ -226,6 +237,7 @@ int run(int argc, char** argv) {
       "studio", "Open RISE Studio, the interactive window: rise studio [SCENE] [--script FILE]");
   studioCommand->prefix_command();
   const auto runLookInside = addLookInsideCommands(app);
+  const auto runMerge = addMergeCommand(app);
   const auto runManual = addManualCommand(app);
 
   try {
@@ -238,6 +250,7 @@ int run(int argc, char** argv) {
   if (*validateCommand) return validate(validatePath);
   if (*studioCommand) return startStudio(studioCommand->remaining());
   if (const std::optional<int> status = runLookInside()) return *status;
+  if (const std::optional<int> status = runMerge()) return *status;
   if (const std::optional<int> status = runManual()) return *status;
   if (*algorithmsCommand) listAlgorithms();
   return 0;

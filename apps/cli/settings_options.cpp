@@ -104,6 +104,12 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
   addShadowOptions(command, settings);
 }
 
+CLI::CheckedTransformer encodings() {
+  return CLI::CheckedTransformer(
+      std::map<std::string, Encoding>{{"srgb", Encoding::Srgb}, {"linear", Encoding::Linear}},
+      CLI::ignore_case);
+}
+
 Scene loadScene(const std::string& path) {
   if (path != "-") return loadSceneFile(path);
   const std::string text{std::istreambuf_iterator<char>(std::cin), {}};

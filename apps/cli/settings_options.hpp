@@ -4,6 +4,7 @@
 #include <string>
 
 #include "algorithms/settings_for_scene.hpp"
+#include "io/image_io.hpp"
 
 namespace rise::cli {
 
@@ -15,6 +16,9 @@ struct SettingsOptions {
 
 // Adds the scene and one option for each setting a render takes.
 void addSettingsOptions(CLI::App& command, SettingsOptions& options);
+
+// The --encoding option's names: srgb, linear.
+CLI::CheckedTransformer encodings();
 
 // Reads the scene file, or standard input for "-". Throws SceneError.
 Scene loadScene(const std::string& path);

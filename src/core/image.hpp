@@ -47,4 +47,12 @@ class Image {
   std::vector<Color> pixels_;
 };
 
+// The pixels of `image` inside `area`, which lies within it.
+inline Image cropped(const Image& image, const PixelRect& area) {
+  Image piece(area.width(), area.height());
+  for (int y = area.y0; y < area.y1; ++y)
+    for (int x = area.x0; x < area.x1; ++x) piece.at(x - area.x0, y - area.y0) = image.at(x, y);
+  return piece;
+}
+
 }  // namespace rise

@@ -7,6 +7,7 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
+#include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <spng.h>
 #include <stb_image.h>
@@ -275,16 +276,41 @@ Image readHdrImage(std::FILE* file, const std::filesystem::path& path) {
   return image;
 }
 
-bool hasPcxExtension(const std::filesystem::path& path) {
+bool hasExtension(const std::filesystem::path& path, std::string_view wanted) {
   std::string extension = path.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".pcx";
+  return extension == wanted;
+}
+
+// OpenEXR's red, green and blue, as RISE writes them, read back as floats.
+Image readExr(const std::filesystem::path& path) {
+  try {
+    Imf::InputFile input(path.c_str());
+    const Imath::Box2i window = input.header().dataWindow();
+    Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
+    char* origin = reinterpret_cast<char*>(&image.at(0, 0)) -
+                   (static_cast<std::ptrdiff_t>(window.min.y) * image.width() + window.min.x) *
+                       static_cast<std::ptrdiff_t>(sizeof(Color));
+    const std::size_t rowStride = sizeof(Color) * static_cast<std::size_t>(image.width());
+    Imf::FrameBuffer frameBuffer;
+    const char* const channelNames[] = {"R", "G", "B"};
+    for (int channel = 0; channel < 3; ++channel)
+      frameBuffer.insert(
+          channelNames[channel],
+          Imf::Slice(Imf::FLOAT, origin + channel * sizeof(float), sizeof(Color), rowStride));
+    input.setFrameBuffer(frameBuffer);
+    input.readPixels(window.min.y, window.max.y);
+    return image;
+  } catch (const std::exception& error) {
+    throw fileError(path, because("cannot read OpenEXR", error.what()));
+  }
 }
 
 }  // namespace
 
 Image readImage(const std::filesystem::path& path, Encoding encoding) {
-  if (hasPcxExtension(path)) return readPcxFile(path, encoding);
+  if (hasExtension(path, ".pcx")) return readPcxFile(path, encoding);
+  if (hasExtension(path, ".exr")) return readExr(path);
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              std::fclose);
   if (!file) throw fileError(path, because("cannot read", std::strerror(errno)));

@@ -35,7 +35,8 @@ void writeImage(const Image& image, const std::filesystem::path& path,
 // Reads an image file and decodes it to linear colours: PCX (the skins of MD2
 // models) by RISE's own reader, PNG, JPEG, TGA, BMP, PNM and the others
 // through stb_image, each decoded by `encoding` (sRGB for colours, linear for
-// data such as normal maps); Radiance HDR kept as its linear values. Throws
+// data such as normal maps); Radiance HDR and OpenEXR kept as their linear
+// values. Throws
 // ImageFileError naming the file and what failed.
 Image readImage(const std::filesystem::path& path, Encoding encoding = Encoding::Srgb);
 

@@ -159,6 +159,7 @@ TEST_F(ImageIoTest, ExrKeepsLinearFloatsBeyondOne) {
   file.setFrameBuffer(frameBuffer);
   file.readPixels(window.min.y, window.max.y);
   EXPECT_EQ(read, image.pixels());
+  EXPECT_EQ(readImage(path).pixels(), image.pixels());  // and RISE reads them back unchanged
 }
 
 TEST_F(ImageIoTest, WriteIntoMissingDirectoryThrowsAndLeavesNothing) {

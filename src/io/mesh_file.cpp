@@ -273,15 +273,18 @@ int md2KeyframeCount(const std::filesystem::path& path) {
   return static_cast<int>(frames);
 }
 
-std::pair<MeshGeometry, MeshGeometry> loadMd2Keyframes(const std::filesystem::path& path, int first,
-                                                       int second) {
-  std::pair<MeshGeometry, MeshGeometry> keyframes{loadMeshFile(path, first),
-                                                  loadMeshFile(path, second)};
-  const auto& [start, end] = keyframes;
-  if (start.triangles != end.triangles || start.positions.size() != end.positions.size() ||
-      start.normals.size() != end.normals.size())
-    throw MeshFileError("keyframes " + std::to_string(first) + " and " + std::to_string(second) +
-                        " do not share their triangles");
+std::vector<MeshGeometry> loadMd2Keyframes(const std::filesystem::path& path, int first, int last) {
+  const int step = last >= first ? 1 : -1;
+  std::vector<MeshGeometry> keyframes;
+  for (int keyframe = first; keyframe != last + step; keyframe += step) {
+    keyframes.push_back(loadMeshFile(path, keyframe));
+    const MeshGeometry& start = keyframes.front();
+    const MeshGeometry& pose = keyframes.back();
+    if (start.triangles != pose.triangles || start.positions.size() != pose.positions.size() ||
+        start.normals.size() != pose.normals.size())
+      throw MeshFileError("keyframes " + std::to_string(first) + " and " +
+                          std::to_string(keyframe) + " do not share their triangles");
+  }
   return keyframes;
 }
 

@@ -9,6 +9,7 @@
 #include <optional>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include "scene/mesh_geometry.hpp"
 
@@ -46,8 +47,8 @@ int md2KeyframeCount(const std::filesystem::path& path);
 // PCX image (Quake II keeps a model's skins beside its tris.md2).
 std::optional<std::filesystem::path> findMd2Skin(const std::filesystem::path& model);
 
-// Two keyframes of an MD2 model: the same triangles in two poses.
-std::pair<MeshGeometry, MeshGeometry> loadMd2Keyframes(const std::filesystem::path& path, int first,
-                                                       int second);
+// The keyframes of an MD2 model from `first` to `last` (downwards when last
+// comes first): the same triangles in their poses.
+std::vector<MeshGeometry> loadMd2Keyframes(const std::filesystem::path& path, int first, int last);
 
 }  // namespace rise

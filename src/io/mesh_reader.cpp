@@ -34,7 +34,7 @@ void appendFan(const Field& face, int vertexCount, std::vector<std::array<int, 3
     triangles.push_back({indices[0], indices[i], indices[i + 1]});
 }
 
-// The poses of a mesh (one, or two keyframes), read in its own space, take
+// The poses of a mesh (one, or its keyframes), read in its own space, take
 // the object's `mapping` there, so that the texture moves with the mesh, and
 // then its transform.
 void mapAndPlace(const CheckedMap& mesh, std::span<MeshGeometry> poses,
@@ -71,8 +71,9 @@ void checkKeyframesExist(const std::vector<Field>& fields, const std::vector<int
 
 // "mesh: {file: models/x.obj}": a model file, found from the scene file's
 // folder. An MD2 model takes the pose of one keyframe, "frame: 40" (the first
-// by default), or moves between two while the shutter is open,
-// "frames: [40, 41]".
+// by default), or moves through the keyframes from one to another over the
+// scene's time, "frames: [40, 45]": while the shutter is open, or over the
+// frames of an animation.
 std::unique_ptr<Shape> readMeshFile(const CheckedMap& mesh, const Field& file, int material,
                                     const Mat4& worldFromObject,
                                     const std::filesystem::path& sceneDirectory) {
@@ -98,10 +99,9 @@ std::unique_ptr<Shape> readMeshFile(const CheckedMap& mesh, const Field& file, i
     if (!keyframes.empty())
       checkKeyframesExist(keyframeFields, keyframes, md2KeyframeCount(path), fileName);
     if (keyframes.size() == 2) {
-      auto [start, end] = loadMd2Keyframes(path, keyframes[0], keyframes[1]);
-      std::array poses{std::move(start), std::move(end)};
+      std::vector<MeshGeometry> poses = loadMd2Keyframes(path, keyframes[0], keyframes[1]);
       mapAndPlace(mesh, poses, worldFromObject);
-      return std::make_unique<KeyframedMesh>(std::move(poses[0]), std::move(poses[1]), material);
+      return std::make_unique<KeyframedMesh>(std::move(poses), material);
     }
     std::array poses{loadMeshFile(path, keyframes.empty() ? 0 : keyframes[0])};
     mapAndPlace(mesh, poses, worldFromObject);

@@ -83,10 +83,26 @@ void checkUpIsAcrossView(const Camera& camera, const std::optional<Field>& up,
          "view from 'position' to 'look_at'");
 }
 
+// Where an animation's camera ends: "motion: {position: ..., look_at: ...}",
+// each key changing the camera's own.
+Camera::Placement readCameraMotion(const Field& field, const Camera& start) {
+  const CheckedMap map(field, "the motion of the camera", {"position", "look_at", "up"});
+  Camera end = start;
+  readIfPresent(map, "position", end.position, readVec3);
+  readIfPresent(map, "look_at", end.lookAt, readVec3);
+  if (const std::optional<Field> up = map.optional("up")) end.up = readDirection(*up);
+  if (!(glm::length(end.lookAt - end.position) > 0.0f))
+    failAt(field.mark,
+           "the camera's motion ends looking at the point it stands on; expected "
+           "'look_at' apart from 'position'");
+  checkUpIsAcrossView(end, map.optional("up"), field);
+  return {end.position, end.lookAt, end.up};
+}
+
 Camera readCamera(const Field& field) {
   const CheckedMap map(
       field, "camera",
-      {"position", "look_at", "up", "fov", "aperture", "focal_distance", "shutter"});
+      {"position", "look_at", "up", "fov", "aperture", "focal_distance", "shutter", "motion"});
   Camera camera;
   camera.position = readVec3(map.required("position"));
   const Field lookAt = map.required("look_at");
@@ -113,7 +129,15 @@ Camera readCamera(const Field& field) {
     if (camera.shutterClose < camera.shutterOpen)
       failExpected(times[1], "a closing time no earlier than the opening time");
   }
+  if (const std::optional<Field> motion = map.optional("motion"))
+    camera.endPlacement = readCameraMotion(*motion, camera);
   return camera;
+}
+
+// An animation: "animation: {frames: 40}" cuts the scene's time into frames.
+int readAnimationFrames(const Field& field) {
+  const CheckedMap map(field, "animation", {"frames"});
+  return readWholeNumber(map.required("frames"), Bound::Positive);
 }
 
 Color readLightColor(const CheckedMap& light) {
@@ -221,12 +245,14 @@ std::vector<Material> readMaterials(const Field& field,
 }
 
 Scene readScene(const YAML::Node& root, std::string source) {
-  const CheckedMap map(Field{root, "the scene", root.Mark()}, "the scene",
-                       {"image", "camera", "ambient", "lights", "materials", "objects"});
+  const CheckedMap map(
+      Field{root, "the scene", root.Mark()}, "the scene",
+      {"image", "camera", "ambient", "lights", "materials", "objects", "animation"});
   Scene scene;
   scene.source = std::move(source);
   readIfPresent(map, "image", scene.image, readImage);
   scene.camera = readCamera(map.required("camera"));
+  readIfPresent(map, "animation", scene.animationFrames, readAnimationFrames);
   readIfPresent(map, "ambient", scene.ambient, readColor);
   if (const std::optional<Field> lights = map.optional("lights")) {
     for (const Field& item : readList(*lights, "a list of lights", "an item of 'lights'"))

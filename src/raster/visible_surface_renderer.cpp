@@ -70,7 +70,7 @@ std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
   shuffle(times, rng);
   std::vector<AccumulationPass> passes;
   for (int i = 0; i < sampling.samples; ++i)
-    passes.push_back({offsets[i], lens[i], camera.hasMotionBlur() ? times[i] : 0.0f});
+    passes.push_back({offsets[i], lens[i], camera.sceneTime(times[i])});
   return passes;
 }
 
@@ -166,6 +166,8 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
   }
   film.merge(filmTile);
   accumulated.image = film.resolve();
+  // A frame is drawn whole, each polygon at once: a region is cut from it.
+  cropToRegion(accumulated, settings);
   const double covered = accumulated.stats.value("covered_pixels");
   accumulated.stats.add("overdraw",
                         covered > 0.0 ? accumulated.stats.value("pixels_written") / covered : 0.0);

@@ -148,12 +148,10 @@ RenderResult DistributedRayTracer::render(const Scene& scene, const RenderSettin
   const SceneIntersector intersector(scene, settings.accel, settings.threads);
   const TracingContext context{scene, intersector, settings.maxDepth};
   const ViewFrame view(scene.camera, settings.width, settings.height);
-  const bool motionBlur = scene.camera.hasMotionBlur();
   const auto traceSample = [&](const Vec2& raster, const CameraSample& sample, Rng& rng,
                                TraceCounters& counters, RayTree* tree) {
     Ray ray = thinLensRay(view, raster, sample.lens);
-    // Rays carry the time as a fraction of the shutter interval.
-    ray.time = motionBlur ? sample.time : 0.0f;
+    ray.time = scene.camera.sceneTime(sample.time);
     if (tree)
       tree->dimensions = SampleDimensions{sample.lens, ray.time, sample.light, sample.gloss};
     DistributedChoices choices(sample, rng);

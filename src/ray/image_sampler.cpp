@@ -60,9 +60,15 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
   Film film(settings.width, settings.height, settings.sampling.filter);
 
   StepRecorder* const steps = observer.stepRecorder();
+  // The tiles are those of the whole image, and only those whose samples
+  // reach the region are traced, so that every pixel of the region adds up
+  // the same samples in the same order as in the whole image.
   std::vector<TileTrace> tiles;
-  for (const PixelRect& area : makeTiles(settings.width, settings.height))
-    tiles.emplace_back(area, film.tileFor(area), result, steps);
+  for (const PixelRect& area : makeTiles(settings.width, settings.height)) {
+    FilmTile filmTile = film.tileFor(area);
+    if (!filmTile.reach().intersection(settings.area()).isEmpty())
+      tiles.emplace_back(area, std::move(filmTile), result, steps);
+  }
   Image shown(settings.width, settings.height);
   const Workers workers(settings.threads, observer);
   workers.forEachTask(static_cast<int>(tiles.size()), [&](int index) {
@@ -83,6 +89,7 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
     refinedPixels += tile.refinedPixels;
   }
   result.image = film.resolve();
+  cropToRegion(result, settings);
   counters.addTo(result.stats);
   result.stats.add("samples_per_pixel", settings.sampling.samples);
   if (settings.sampling.pattern == SamplePattern::Adaptive)

@@ -66,6 +66,9 @@ class FilmTile {
   // the filter reaches no neighbour (the box), a close preview otherwise.
   void resolveInto(Image& image, const PixelRect& area) const;
 
+  // The pixels its samples reach, margin included.
+  PixelRect reach() const { return {x0_, y0_, x1_, y1_}; }
+
  private:
   friend class Film;
   FilmTile(const ReconstructionFilter& filter, int x0, int y0, int x1, int y1);

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string_view>
 
+#include "core/image.hpp"
 #include "core/sampling.hpp"
 #include "scene/tessellation.hpp"
 
@@ -54,6 +56,14 @@ struct RenderSettings {
   int shadowMapSize = 1024;
   float shadowBias = 1.5f;
   int shadowFilter = 1;
+
+  // Only this part of the image, for renders split among processes: the
+  // result holds its pixels alone, each the value it has in the whole image
+  // (the random numbers of a pixel depend on the pixel, not on the part).
+  std::optional<PixelRect> region;
+
+  // The pixels rendered: the region, or the whole image.
+  PixelRect area() const { return region.value_or(PixelRect{0, 0, width, height}); }
 };
 
 }  // namespace rise

@@ -66,4 +66,10 @@ bool AlgorithmDescription::reads(Option option) const {
   return std::find(options.begin(), options.end(), option) != options.end();
 }
 
+void cropToRegion(RenderResult& result, const RenderSettings& settings) {
+  if (!settings.region) return;
+  result.image = cropped(result.image, *settings.region);
+  for (auto& [name, buffer] : result.buffers) buffer = cropped(buffer, *settings.region);
+}
+
 }  // namespace rise

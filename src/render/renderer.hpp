@@ -28,6 +28,10 @@ struct RenderResult {
   Stats stats;
 };
 
+// Cuts the image and the auxiliary buffers of a whole-image result to
+// `settings`'s region, for the algorithms that render more than it.
+void cropToRegion(RenderResult& result, const RenderSettings& settings);
+
 // Watches a render from outside: progress for a bar; cancellation, and the
 // image as it is made, for the studio; and the algorithm's steps for whoever
 // wants to see them. The render calls it from its worker threads, one call at

@@ -8,6 +8,7 @@ ViewFrame::ViewFrame(const Camera& camera, int width, int height)
     : eye_(camera.position),
       width_(width),
       height_(height),
+      time_(camera.sceneTime(0.0f)),
       lensRadius_(0.5f * camera.aperture),
       focalDistance_(camera.focalDistance > 0.0f ? camera.focalDistance
                                                  : glm::length(camera.lookAt - camera.position)) {
@@ -23,7 +24,22 @@ ViewFrame::ViewFrame(const Camera& camera, int width, int height)
 Ray ViewFrame::primaryRay(float x, float y) const {
   const float sx = (2.0f * x / static_cast<float>(width_) - 1.0f) * halfWidth_;
   const float sy = (1.0f - 2.0f * y / static_cast<float>(height_)) * halfHeight_;
-  return Ray{eye_, glm::normalize(forward_ + sx * right_ + sy * up_)};
+  return Ray{eye_, glm::normalize(forward_ + sx * right_ + sy * up_), time_};
+}
+
+Camera cameraForFrame(const Camera& camera, int frame, int frames) {
+  Camera framed = camera;
+  const float length = 1.0f / static_cast<float>(frames);
+  const float start = static_cast<float>(frame) * length;
+  framed.sceneTimeOpen = start + camera.shutterOpen * length;
+  framed.sceneTimeClose = start + camera.shutterClose * length;
+  if (camera.endPlacement) {
+    const Camera::Placement& end = *camera.endPlacement;
+    framed.position = glm::mix(camera.position, end.position, framed.sceneTimeOpen);
+    framed.lookAt = glm::mix(camera.lookAt, end.lookAt, framed.sceneTimeOpen);
+    framed.up = glm::normalize(glm::mix(camera.up, end.up, framed.sceneTimeOpen));
+  }
+  return framed;
 }
 
 }  // namespace rise

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <optional>
+
 #include "core/math.hpp"
 #include "core/ray.hpp"
 #include "core/sampling.hpp"
@@ -14,14 +16,42 @@ struct Camera {
   Vec3 position{0.0f, 0.0f, -5.0f};
   Vec3 lookAt{0.0f};
   Vec3 up{0.0f, 1.0f, 0.0f};
+  // Where an animation's camera stands at its end (the scene file's camera
+  // `motion`), or nothing when it stays.
+  struct Placement {
+    Vec3 position, lookAt, up;
+  };
+  std::optional<Placement> endPlacement;
   float fovDegrees = 50.0f;
   float aperture = 0.0f;       // the lens's diameter; 0 is a pinhole, everything sharp
   float focalDistance = 0.0f;  // from the eye to the plane in focus; 0: the look_at point's
   float shutterOpen = 0.0f;
   float shutterClose = 0.0f;  // equal to shutterOpen: an instant, no motion blur
 
+  // The span of the scene's time the shutter covers: shapes stand at their
+  // `transform` at time 0 and at their `motion` at time 1, an MD2 model in
+  // the first keyframe of its `frames` at 0 and in the last at 1. A still
+  // image's shutter covers all of it; an animation's frame covers a part
+  // (cameraForFrame).
+  float sceneTimeOpen = 0.0f;
+  float sceneTimeClose = 1.0f;
+
   bool hasMotionBlur() const { return shutterClose > shutterOpen; }
+  // The scene's time at `fraction` of the shutter interval: a camera without
+  // one sees the instant it opens.
+  float sceneTime(float fraction) const {
+    return hasMotionBlur() ? sceneTimeOpen + fraction * (sceneTimeClose - sceneTimeOpen)
+                           : sceneTimeOpen;
+  }
 };
+
+// The camera of frame `frame` (from 0) of an animation of `frames` frames:
+// the frames cut the scene's time from 0 to 1 into equal parts, frame f's
+// beginning at f / frames, so that a cycle loops; its shutter, read in
+// frames (a shutter [0, 0.5] is open for the first half of each), covers
+// that much of its part. The camera stands where it is at the frame's
+// beginning, between its placement and its end placement.
+Camera cameraForFrame(const Camera& camera, int frame, int frames);
 
 // The camera's orthonormal frame for an image of a given size (the textbook's
 // U, V, N axes): right, up and forward, and the extent of the image plane at
@@ -34,7 +64,7 @@ class ViewFrame {
   // The ray from the eye through the continuous raster position (x, y):
   // (0, 0) is the top-left corner of the image, (width, height) the
   // bottom-right, so pixel (i, j)'s centre is (i + 0.5, j + 0.5).
-  Ray primaryRay(float x, float y) const;
+  Ray primaryRay(float x, float y) const;  // at the instant the shutter opens
 
   // The point of the lens chosen by the sample `lens` in the unit square, as
   // offsets along right and up from the eye: uniform over the lens's disk,
@@ -57,6 +87,7 @@ class ViewFrame {
   Vec3 eye_, right_, up_, forward_;
   float halfWidth_, halfHeight_;
   int width_, height_;
+  float time_;
   float lensRadius_;
   float focalDistance_;
 };

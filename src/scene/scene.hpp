@@ -27,7 +27,8 @@ struct Scene {
   std::string source;  // the scene file's name, for messages
   ImageSpec image;
   Camera camera;
-  Color ambient{0.0f};  // Ia: the ambient light
+  int animationFrames = 0;  // the frames of its animation; 0: a still image
+  Color ambient{0.0f};      // Ia: the ambient light
   std::vector<std::unique_ptr<Light>> lights;
   std::vector<Material> materials;
   std::vector<std::unique_ptr<Shape>> shapes;

@@ -1,5 +1,6 @@
 #include "scene/shapes/keyframed_mesh.hpp"
 
+#include <algorithm>
 #include <cassert>
 #include <utility>
 
@@ -10,19 +11,34 @@
 namespace rise {
 
 KeyframedMesh::KeyframedMesh(MeshGeometry start, MeshGeometry end, int material)
-    : Shape(material), start_(std::move(start)), end_(std::move(end)) {
-  assert(start_.triangles == end_.triangles);
-  assert(start_.positions.size() == end_.positions.size());
-  assert(start_.normals.size() == end_.normals.size());
-  assert(start_.normals.empty() || start_.normals.size() == start_.positions.size());
-  assert(start_.uvs.empty() || start_.uvs.size() == start_.positions.size());
+    : KeyframedMesh(std::vector<MeshGeometry>{std::move(start), std::move(end)}, material) {}
+
+KeyframedMesh::KeyframedMesh(std::vector<MeshGeometry> keyframes, int material)
+    : Shape(material), keyframes_(std::move(keyframes)) {
+  assert(keyframes_.size() >= 2);
+  for (const MeshGeometry& pose : keyframes_) {
+    assert(pose.triangles == keyframes_[0].triangles);
+    assert(pose.positions.size() == keyframes_[0].positions.size());
+    assert(pose.normals.size() == keyframes_[0].normals.size());
+  }
+  assert(keyframes_[0].normals.empty() ||
+         keyframes_[0].normals.size() == keyframes_[0].positions.size());
+  assert(keyframes_[0].uvs.empty() || keyframes_[0].uvs.size() == keyframes_[0].positions.size());
+}
+
+KeyframedMesh::Between KeyframedMesh::between(float time) const {
+  const int intervals = static_cast<int>(keyframes_.size()) - 1;
+  const float along = std::clamp(time, 0.0f, 1.0f) * static_cast<float>(intervals);
+  const int from = std::min(static_cast<int>(along), intervals - 1);
+  return {keyframes_[from], keyframes_[from + 1], along - static_cast<float>(from)};
 }
 
 std::array<Vec3, 3> KeyframedMesh::cornersAt(int triangle, float time) const {
+  const auto [from, to, fraction] = between(time);
   std::array<Vec3, 3> corners;
   for (int corner = 0; corner < 3; ++corner) {
-    const int vertex = start_.triangles[triangle][corner];
-    corners[corner] = glm::mix(start_.positions[vertex], end_.positions[vertex], time);
+    const int vertex = from.triangles[triangle][corner];
+    corners[corner] = glm::mix(from.positions[vertex], to.positions[vertex], fraction);
   }
   return corners;
 }
@@ -30,20 +46,20 @@ std::array<Vec3, 3> KeyframedMesh::cornersAt(int triangle, float time) const {
 SurfacePoint KeyframedMesh::pointOn(int triangle, float time, const Vec2& barycentric) const {
   const auto [v0, v1, v2] = cornersAt(triangle, time);
   SurfacePoint surface(atBarycentric(v0, v1, v2, barycentric), windingNormal(v0, v1, v2));
-  const auto& [a, b, c] = start_.triangles[triangle];
-  if (!start_.normals.empty()) {
+  const auto [from, to, fraction] = between(time);
+  const auto& [a, b, c] = from.triangles[triangle];
+  if (!from.normals.empty()) {
     const auto normalAt = [&](int vertex) {
-      return glm::mix(start_.normals[vertex], end_.normals[vertex], time);
+      return glm::mix(from.normals[vertex], to.normals[vertex], fraction);
     };
     surface.shadingNormal =
         interpolatedNormal(surface.normal, normalAt(a), normalAt(b), normalAt(c), barycentric);
     surface.interpolation =
         normalInterpolation({v0, v1, v2}, {normalAt(a), normalAt(b), normalAt(c)}, barycentric);
   }
-  if (!start_.uvs.empty()) {
-    surface.uv = atBarycentric(start_.uvs[a], start_.uvs[b], start_.uvs[c], barycentric);
-    triangleTangents(v0, v1, v2, start_.uvs[a], start_.uvs[b], start_.uvs[c], surface.dpdu,
-                     surface.dpdv);
+  if (const std::vector<Vec2>& uvs = from.uvs; !uvs.empty()) {
+    surface.uv = atBarycentric(uvs[a], uvs[b], uvs[c], barycentric);
+    triangleTangents(v0, v1, v2, uvs[a], uvs[b], uvs[c], surface.dpdu, surface.dpdv);
   }
   return surface;
 }
@@ -62,19 +78,19 @@ SurfacePoint KeyframedMesh::surfaceAt(const Ray& ray, const Hit& hit) const {
 
 Bounds3 KeyframedMesh::bounds() const {
   Bounds3 box;
-  for (const Vec3& position : start_.positions) box.grow(position);
-  for (const Vec3& position : end_.positions) box.grow(position);
+  for (const MeshGeometry& pose : keyframes_)
+    for (const Vec3& position : pose.positions) box.grow(position);
   return box;
 }
 
-int KeyframedMesh::primitiveCount() const { return static_cast<int>(start_.triangles.size()); }
+int KeyframedMesh::primitiveCount() const {
+  return static_cast<int>(keyframes_[0].triangles.size());
+}
 
 Bounds3 KeyframedMesh::primitiveBounds(int triangle) const {
   Bounds3 box;
-  for (int vertex : start_.triangles[triangle]) {
-    box.grow(start_.positions[vertex]);
-    box.grow(end_.positions[vertex]);
-  }
+  for (int vertex : keyframes_[0].triangles[triangle])
+    for (const MeshGeometry& pose : keyframes_) box.grow(pose.positions[vertex]);
   return box;
 }
 

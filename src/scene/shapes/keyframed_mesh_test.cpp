@@ -29,6 +29,18 @@ KeyframedMesh risingTriangle() {
 
 Ray downAt(float x, float y, float time) { return Ray{{x, y, 5.0f}, {0.0f, 0.0f, -1.0f}, time}; }
 
+TEST(KeyframedMesh, PassesThroughEveryKeyframeInTurn) {
+  // Up to z = 2 at time 0.5, down to z = 1 at time 1.
+  const KeyframedMesh mesh({pose(0.0f, {0.0f, 0.0f, 1.0f}), pose(2.0f, {0.0f, 0.0f, 1.0f}),
+                            pose(1.0f, {0.0f, 0.0f, 1.0f})},
+                           0);
+  for (const auto& [time, z] : {std::pair{0.25f, 1.0f}, {0.5f, 2.0f}, {0.75f, 1.5f}, {1.0f, 1.0f}})
+    EXPECT_TRUE(hitsAt(intersect(mesh, downAt(0.75f, 0.25f, time)), 5.0f - z, {0.75f, 0.25f, z},
+                       {0.0f, 0.0f, 1.0f}))
+        << time;
+  EXPECT_FLOAT_EQ(mesh.bounds().max.z, 2.0f);
+}
+
 TEST(KeyframedMesh, MeetsEachRayWhereTheMeshIsAtTheRaysTime) {
   const KeyframedMesh mesh = risingTriangle();
   EXPECT_TRUE(hitsAt(intersect(mesh, downAt(0.75f, 0.25f, 0.0f)), 5.0f, {0.75f, 0.25f, 0.0f},

@@ -1,0 +1,33 @@
+// A render shared among MPI ranks: rank 0 cuts the image into tiles (or a
+// sequence into frames) and hands them out from a queue, one to each rank
+// that asks, so that a slow rank takes fewer; the others render what they are
+// given and send back the pixels; rank 0 writes the files, each whole. Every
+// rank loads the scene itself. A rank that fails says why and stops the
+// handing out: the run fails with its status and no file is written.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "animation.hpp"
+#include "io/image_io.hpp"
+#include "settings_options.hpp"
+
+namespace rise::mpi {
+
+struct DistributedRenderOptions {
+  cli::SettingsOptions settings;
+  std::filesystem::path output;
+  std::string algorithm = "ray-tracing";
+  Encoding encoding = Encoding::Srgb;
+  cli::AnimationOptions animation;
+  int tileSize = 64;
+};
+
+// Rank 0's part: returns the run's exit status.
+int coordinate(const DistributedRenderOptions& options, int ranks);
+
+// Every other rank's part: returns its exit status.
+int work(const DistributedRenderOptions& options);
+
+}  // namespace rise::mpi
