@@ -349,6 +349,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"tab_indentation.yaml",
                  "tab_indentation.yaml:3:10: invalid YAML: unexpected ':' (wrong indentation, a "
                  "tab, or a value with ': ' that needs quotes?)"},
+        BadScene{"leading_comma.yaml",
+                 "leading_comma.yaml:2:1: invalid YAML: unexpected ','; expected a value (quote "
+                 "text that starts with it)"},
+        BadScene{"deep_nesting.yaml",
+                 "deep_nesting.yaml:3:73: lists and maps nested more than 64 deep; a scene needs "
+                 "only a few levels"},
         BadScene{"not_a_map.yaml",
                  "not_a_map.yaml:2:1: the scene is a list of 2 items; expected a map with the "
                  "keys image, camera, ambient, lights, materials, objects"},

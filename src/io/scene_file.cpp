@@ -1,7 +1,5 @@
 #include "io/scene_file.hpp"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <filesystem>
@@ -220,8 +218,8 @@ std::vector<Material> readMaterials(const Field& field,
   return materials;
 }
 
-Scene readScene(const YAML::Node& root, std::string source) {
-  const CheckedMap map(Field{root, "the scene", root.Mark()}, "the scene",
+Scene readScene(const YamlNode& root, std::string source) {
+  const CheckedMap map(Field{root, "the scene", root.mark()}, "the scene",
                        {"image", "camera", "ambient", "lights", "materials", "objects"});
   Scene scene;
   scene.source = std::move(source);
@@ -241,24 +239,7 @@ Scene readScene(const YAML::Node& root, std::string source) {
   return scene;
 }
 
-// yaml-cpp's wording for the syntax errors people make most, said plainly.
-std::string explainSyntaxError(const YAML::ParserException& error, std::string_view text) {
-  if (error.msg == YAML::ErrorMsg::END_OF_SEQ_FLOW)
-    return "a list opened with '[' is not closed with ']'";
-  if (error.msg == YAML::ErrorMsg::END_OF_MAP_FLOW)
-    return "a map opened with '{' is not closed with '}'";
-  if (error.msg == YAML::ErrorMsg::FLOW_END && error.mark.pos >= 0 &&
-      static_cast<std::size_t>(error.mark.pos) < text.size())
-    return std::string("unexpected '") + text[error.mark.pos] +
-           "'; check that the brackets before it are closed in order";
-  if (error.msg == YAML::ErrorMsg::MAP_VALUE)
-    return "unexpected ':' (wrong indentation, a tab, or a value with ': ' that needs quotes?)";
-  if (error.msg == YAML::ErrorMsg::TAB_IN_INDENTATION)
-    return "a tab in the indentation; YAML indents with spaces";
-  return error.msg;
-}
-
-SceneError errorAt(const std::string& source, const YAML::Mark& mark, const std::string& message) {
+SceneError errorAt(const std::string& source, Mark mark, const std::string& message) {
   return SceneError(source, mark.line + 1, mark.column + 1, message);
 }
 
@@ -266,20 +247,20 @@ SceneError errorAt(const std::string& source, const YAML::Mark& mark, const std:
 
 Scene loadScene(std::string_view text, std::string sourceName) {
   try {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(std::string(text));
-    if (documents.empty() || documents[0].IsNull())
+    const std::vector<YamlNode> documents = parseYamlDocuments(text);
+    if (documents.empty() || documents[0].isNull())
       throw SceneError(sourceName,
                        "the scene file is empty; expected at least 'camera' and 'objects'");
     // An empty document after the scene, as an editor may leave after a
     // final '---', says nothing and is harmless.
     const auto second = std::find_if(documents.begin() + 1, documents.end(),
-                                     [](const YAML::Node& document) { return !document.IsNull(); });
+                                     [](const YamlNode& document) { return !document.isNull(); });
     if (second != documents.end())
-      failAt(second->Mark(),
+      failAt(second->mark(),
              "a second YAML document (after '---'); expected the scene file to hold one scene");
     return readScene(documents[0], sourceName);
-  } catch (const YAML::ParserException& error) {
-    throw errorAt(sourceName, error.mark, "invalid YAML: " + explainSyntaxError(error, text));
+  } catch (const YamlError& error) {
+    throw errorAt(sourceName, error.mark(), error.what());
   } catch (const YamlValueError& error) {
     throw errorAt(sourceName, error.mark(), error.what());
   }

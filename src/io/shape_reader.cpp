@@ -42,9 +42,9 @@ int readMaterialReference(const Field& field, const std::vector<Material>& mater
 }
 
 Vec3 readScale(const Field& field) {
-  if (!field.node.IsSequence() && !field.node.IsScalar())
+  if (!field.node.isSequence() && !field.node.isScalar())
     failExpected(field, "a number or a list of 3 numbers [x, y, z]");
-  const Vec3 scale = field.node.IsSequence() ? readVec3(field) : Vec3(readNumber(field));
+  const Vec3 scale = field.node.isSequence() ? readVec3(field) : Vec3(readNumber(field));
   if (glm::any(glm::equal(scale, Vec3(0.0f))))
     failExpected(field, "a scale that is not 0 on any axis");
   return scale;

@@ -21,7 +21,7 @@ const std::vector<std::pair<std::string, NoisePattern>> kNoisePatterns{
 
 // A number for both coordinates, or a pair [u, v].
 Vec2 readPair(const Field& field) {
-  if (!field.node.IsSequence()) return Vec2(readNumber(field));
+  if (!field.node.isSequence()) return Vec2(readNumber(field));
   const std::vector<Field> items = readList(field, "a number or a list of 2 numbers [u, v]",
                                             "a coordinate of " + field.name, 2, 2);
   return {readNumber(items[0]), readNumber(items[1])};

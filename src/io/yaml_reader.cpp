@@ -14,29 +14,18 @@ constexpr std::size_t kMostKeysListed = 6;
 
 std::string quoted(std::string_view text) { return std::string("'").append(text).append("'"); }
 
-// A quoted scalar ("1.5", '2') is a string in YAML even when it looks like a
-// number; yaml-cpp marks it with the non-specific tag "!".
-bool isQuoted(const YAML::Node& node) { return node.Tag() == "!"; }
-
-std::optional<double> numberIn(const YAML::Node& node) {
-  double value = 0.0;
-  if (!node.IsScalar() || isQuoted(node) || !YAML::convert<double>::decode(node, value))
-    return std::nullopt;
-  return value;
-}
-
-std::string describeScalar(const YAML::Node& node) {
-  std::string text = node.Scalar();
+std::string describeScalar(const YamlNode& node) {
+  std::string text = node.scalar();
   if (text.size() > kLongestValueShown) text = text.substr(0, kLongestValueShown - 3) + "...";
-  if (isQuoted(node)) return "the string \"" + text + "\"";
-  return numberIn(node) ? text : quoted(text);
+  if (node.isQuoted()) return "the string \"" + text + "\"";
+  return node.number() ? text : quoted(text);
 }
 
-std::string describeSequence(const YAML::Node& node) {
+std::string describeSequence(const YamlNode& node) {
   if (node.size() == 0) return "an empty list";
   std::vector<std::string> items;
-  for (const YAML::Node& item : node) {
-    if (!item.IsScalar()) break;
+  for (const YamlNode& item : node.items()) {
+    if (!item.isScalar()) break;
     items.push_back(describeScalar(item));
   }
   const std::string bracketed = std::string("[").append(joinedWithCommas(items)).append("]");
@@ -45,12 +34,12 @@ std::string describeSequence(const YAML::Node& node) {
                           : "a list of " + std::to_string(node.size()) + " items";
 }
 
-std::string describeMap(const YAML::Node& node) {
+std::string describeMap(const YamlNode& node) {
   if (node.size() == 0) return "an empty map";
   if (node.size() > kMostKeysListed) return "a map of " + std::to_string(node.size()) + " keys";
   std::vector<std::string> keys;
-  for (const auto& entry : node)
-    keys.push_back(entry.first.IsScalar() ? entry.first.Scalar() : "?");
+  for (const auto& entry : node.entries())
+    keys.push_back(entry.first.isScalar() ? entry.first.scalar() : "?");
   return (keys.size() == 1 ? "a map with the key " : "a map with the keys ") +
          joinedWithCommas(keys);
 }
@@ -105,7 +94,7 @@ bool withinBound(double value, Bound bound) {
 }
 
 double readBoundedNumber(const Field& field, Bound bound, std::string_view kind) {
-  const std::optional<double> value = numberIn(field.node);
+  const std::optional<double> value = field.node.number();
   if (!value) failExpected(field, numberExpectation(bound, kind));
   if (!std::isfinite(*value) || std::abs(*value) > std::numeric_limits<float>::max())
     failExpected(field, numberExpectation(bound, "a finite number"));
@@ -121,29 +110,26 @@ std::string joinedWithCommas(const std::vector<std::string>& words) {
   return text;
 }
 
-Field makeField(const YAML::Node& node, std::string name, const YAML::Mark& keyMark) {
-  return Field{node, std::move(name), node.IsNull() ? keyMark : node.Mark()};
+Field makeField(const YamlNode& node, std::string name, Mark keyMark) {
+  return Field{node, std::move(name), node.isNull() ? keyMark : node.mark()};
 }
 
-void failAt(const YAML::Mark& mark, const std::string& message) {
-  throw YamlValueError(mark, message);
-}
+void failAt(Mark mark, const std::string& message) { throw YamlValueError(mark, message); }
 
 void failExpected(const Field& field, std::string_view expectation) {
   failAt(field.mark,
          field.name + " is " + describe(field.node) + "; expected " + std::string(expectation));
 }
 
-std::string describe(const YAML::Node& node) {
-  switch (node.Type()) {
-    case YAML::NodeType::Scalar:
+std::string describe(const YamlNode& node) {
+  switch (node.kind()) {
+    case YamlNode::Kind::Scalar:
       return describeScalar(node);
-    case YAML::NodeType::Sequence:
+    case YamlNode::Kind::Sequence:
       return describeSequence(node);
-    case YAML::NodeType::Map:
+    case YamlNode::Kind::Map:
       return describeMap(node);
-    case YAML::NodeType::Null:
-    case YAML::NodeType::Undefined:
+    case YamlNode::Kind::Null:
       break;
   }
   return "empty";
@@ -206,8 +192,8 @@ Color readColor(const Field& field) {
 }
 
 std::string readName(const Field& field) {
-  if (!field.node.IsScalar()) failExpected(field, "a name");
-  return field.node.Scalar();
+  if (!field.node.isScalar()) failExpected(field, "a name");
+  return field.node.scalar();
 }
 
 float readNonNegative(const Field& field) { return readNumber(field, Bound::NonNegative); }
@@ -216,10 +202,11 @@ int readPositiveWholeNumber(const Field& field) { return readWholeNumber(field, 
 
 std::vector<Field> readList(const Field& field, std::string_view expectation, std::string itemName,
                             std::size_t minItems, std::size_t maxItems) {
-  if (!field.node.IsSequence() || field.node.size() < minItems || field.node.size() > maxItems)
+  if (!field.node.isSequence() || field.node.size() < minItems || field.node.size() > maxItems)
     failExpected(field, expectation);
   std::vector<Field> items;
-  for (const YAML::Node& item : field.node) items.push_back(makeField(item, itemName, field.mark));
+  for (const YamlNode& item : field.node.items())
+    items.push_back(makeField(item, itemName, field.mark));
   return items;
 }
 
@@ -234,20 +221,20 @@ std::vector<Vec3> readPoints(const Field& field, std::string_view expectation,
 
 std::vector<MapEntry> readMap(const Field& field, std::string_view expectation,
                               std::string_view mapName) {
-  if (!field.node.IsMap()) failExpected(field, expectation);
+  if (!field.node.isMap()) failExpected(field, expectation);
   std::vector<MapEntry> entries;
-  for (const auto& keyAndValue : field.node) {
-    const YAML::Node& key = keyAndValue.first;
-    if (!key.IsScalar())
-      failAt(key.Mark(),
+  for (const auto& keyAndValue : field.node.entries()) {
+    const YamlNode& key = keyAndValue.first;
+    if (!key.isScalar())
+      failAt(key.mark(),
              "a key in " + std::string(mapName) + " is " + describe(key) + "; expected a name");
     const bool repeated = std::any_of(entries.begin(), entries.end(), [&](const MapEntry& entry) {
-      return entry.key == key.Scalar();
+      return entry.key == key.scalar();
     });
     if (repeated)
-      failAt(key.Mark(), "duplicate key " + quoted(key.Scalar()) + " in " + std::string(mapName) +
+      failAt(key.mark(), "duplicate key " + quoted(key.scalar()) + " in " + std::string(mapName) +
                              "; a key may appear only once");
-    entries.push_back(MapEntry{key.Scalar(), key.Mark(), keyAndValue.second});
+    entries.push_back(MapEntry{key.scalar(), key.mark(), keyAndValue.second});
   }
   return entries;
 }
@@ -282,7 +269,7 @@ MapEntry readKindAndProperties(const Field& item, std::string_view kindWord,
   const std::string expectation = "a map with one key naming the " + std::string(kindWord) + " (" +
                                   joinedWithCommas(kinds) +
                                   ") and its properties indented under it";
-  if (!item.node.IsMap() || item.node.size() != 1) failExpected(item, expectation);
+  if (!item.node.isMap() || item.node.size() != 1) failExpected(item, expectation);
   const MapEntry entry = readMap(item, expectation, item.name).front();
   if (std::find(kinds.begin(), kinds.end(), entry.key) == kinds.end())
     failAt(entry.keyMark, "unknown " + std::string(kindWord) + " '" + entry.key + "'; " +
