@@ -21,10 +21,12 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "io/file_limits.hpp"
 #include "io/pcx_file.hpp"
 
 namespace rise {
@@ -224,17 +226,37 @@ void writeImage(const Image& image, const std::filesystem::path& path, Encoding 
 
 namespace {
 
+// What stb_image's terse reason means for the person who chose the file,
+// with the reason after it. A PNG chunk that stb_image does not know is
+// reported by its 4-letter name alone ("IDA", or "" past the end of a file).
+std::string explainedStbFailure() {
+  std::string reason = stbi_failure_reason() ? stbi_failure_reason() : "no reason given";
+  if (reason.size() <= 4) reason = "unknown PNG chunk '" + reason + "'";
+  std::string meaning = "the image data is corrupt or cut short";
+  if (reason == "unknown image type")
+    meaning = "not an image in a format RISE reads (PNG, JPEG, TGA, BMP, GIF, PSD, PNM, HDR, PCX)";
+  if (reason == "outofmem" || reason == "too large") meaning = "the image is too large to decode";
+  return meaning + " (stb_image: " + reason + ")";
+}
+
+// The size stb_image finds in the header, checked before it decodes.
+void checkImageSize(std::FILE* file, const std::filesystem::path& path) {
+  int width = 0, height = 0, channels = 0;
+  if (!stbi_info_from_file(file, &width, &height, &channels)) return;  // decoding says why
+  if (static_cast<std::int64_t>(width) * height > kMostImagePixels)
+    throw fileError(path, "the image is " + std::to_string(width) + " x " + std::to_string(height) +
+                              " pixels, more than the " + std::to_string(kMostImagePixels) +
+                              " (8192 x 4096) that RISE reads");
+}
+
 // PNG, JPEG, TGA, BMP and the other 8-bit formats stb_image reads.
-Image readEightBitImage(const std::filesystem::path& path, Encoding encoding) {
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr) throw fileError(path, because("cannot read", std::strerror(errno)));
+Image readEightBitImage(std::FILE* file, const std::filesystem::path& path, Encoding encoding) {
   int width = 0;
   int height = 0;
   int channelsInFile = 0;
   const std::unique_ptr<stbi_uc, void (*)(void*)> bytes(
       stbi_load_from_file(file, &width, &height, &channelsInFile, 3), stbi_image_free);
-  std::fclose(file);
-  if (!bytes) throw fileError(path, because("cannot read", stbi_failure_reason()));
+  if (!bytes) throw fileError(path, explainedStbFailure());
 
   Image image(width, height);
   const stbi_uc* byte = bytes.get();
@@ -250,7 +272,7 @@ Image readHdrImage(std::FILE* file, const std::filesystem::path& path) {
   int width = 0, height = 0, channels = 0;
   const std::unique_ptr<float, void (*)(void*)> values(
       stbi_loadf_from_file(file, &width, &height, &channels, 3), stbi_image_free);
-  if (!values) throw fileError(path, because("cannot read", stbi_failure_reason()));
+  if (!values) throw fileError(path, explainedStbFailure());
   Image image(width, height);
   const float* value = values.get();
   for (int y = 0; y < height; ++y)
@@ -267,14 +289,18 @@ bool hasPcxExtension(const std::filesystem::path& path) {
 
 }  // namespace
 
-Image readImage(const std::filesystem::path& path, Encoding encoding) {
-  if (hasPcxExtension(path)) return readPcxFile(path, encoding);
+Image readImage(const std::filesystem::path& path, Encoding encoding,
+                std::vector<std::string>* warnings) {
+  if (const std::optional<std::string> problem = fileKindOrSizeProblem(path, kLargestImageFile))
+    throw fileError(path, *problem);
+  if (hasPcxExtension(path)) return readPcxFile(path, encoding, warnings);
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              std::fclose);
   if (!file) throw fileError(path, because("cannot read", std::strerror(errno)));
-  // stb_image reads the signature and puts the file back where it was.
+  // stb_image reads the signature and the header and puts the file back where it was.
+  checkImageSize(file.get(), path);
   if (stbi_is_hdr_from_file(file.get())) return readHdrImage(file.get(), path);
-  return readEightBitImage(path, encoding);
+  return readEightBitImage(file.get(), path, encoding);
 }
 
 }  // namespace rise

@@ -6,12 +6,12 @@
 #include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <utility>
 #include <vector>
 
+#include "io/file_limits.hpp"
 #include "io/image_io.hpp"
 #include "io/shape_reader.hpp"
 #include "io/texture_reader.hpp"
@@ -24,6 +24,12 @@ namespace {
 // How close to parallel the view direction and the up vector may be (the
 // sine of the angle between them) before the camera has no defined "right".
 constexpr float kParallelSine = 1e-6f;
+// Beyond this distance from what it looks at, a camera's rays square numbers
+// that floats cannot hold.
+constexpr double kFarthestCamera = 1e15;
+constexpr float kLeastIor = 0.1f;
+constexpr float kGreatestIor = 10.0f;
+constexpr float kGreatestRoughness = 10.0f;  // a cone of 84 degrees
 
 SamplePattern readPattern(const Field& field) {
   return readChoice<SamplePattern>(field, {{"none", SamplePattern::None},
@@ -93,6 +99,11 @@ Camera readCamera(const Field& field) {
     failAt(lookAt.mark,
            "'look_at' in camera is the same point as 'position'; expected a point for the camera "
            "to look towards");
+  const double distance = glm::length(glm::dvec3(camera.lookAt) - glm::dvec3(camera.position));
+  if (distance > kFarthestCamera)
+    failAt(lookAt.mark, "'look_at' in camera is " + shortNumber(distance) +
+                            " units from 'position'; expected a camera at most " +
+                            shortNumber(kFarthestCamera) + " units from the point it looks at");
   const std::optional<Field> up = map.optional("up");
   if (up) camera.up = readDirection(*up);
   checkUpIsAcrossView(camera, up, field);
@@ -182,7 +193,7 @@ std::unique_ptr<Light> readLight(const Field& item) {
   return kind.read(light, readLightColor(light));
 }
 
-Material readMaterial(const MapEntry& entry, const std::filesystem::path& sceneDirectory) {
+Material readMaterial(const MapEntry& entry, SceneFiles& files) {
   const std::string name = "material '" + entry.key + "'";
   const CheckedMap map(makeField(entry.value, name, entry.keyMark), name,
                        {"color", "texture", "bump", "normal_map", "ka", "kd", "ks", "ks_texture",
@@ -191,30 +202,34 @@ Material readMaterial(const MapEntry& entry, const std::filesystem::path& sceneD
   material.name = entry.key;
   readIfPresent(map, "color", material.color, readColor);
   if (const std::optional<Field> texture = map.optional("texture"))
-    material.texture = readTexture(*texture, sceneDirectory);
+    material.texture = readTexture(*texture, files);
   if (const std::optional<Field> bump = map.optional("bump"))
-    material.bump = readBump(*bump, sceneDirectory);
+    material.bump = readBump(*bump, files);
   if (const std::optional<Field> normalMap = map.optional("normal_map"))
-    material.normalMap = readNormalMap(*normalMap, sceneDirectory);
+    material.normalMap = readNormalMap(*normalMap, files);
   readIfPresent(map, "ka", material.ka, readNonNegative);
   readIfPresent(map, "kd", material.kd, readNonNegative);
   readIfPresent(map, "ks", material.ks, readNonNegative);
   if (const std::optional<Field> ksTexture = map.optional("ks_texture"))
-    material.ksTexture = readTexture(*ksTexture, sceneDirectory, Encoding::Linear);
+    material.ksTexture = readTexture(*ksTexture, files, Encoding::Linear);
   readIfPresent(map, "n", material.n, readNonNegative);
-  readIfPresent(map, "reflection", material.reflection, readNonNegative);
-  readIfPresent(map, "transmission", material.transmission, readNonNegative);
-  readIfPresent(map, "ior", material.ior, readPositive);
-  readIfPresent(map, "roughness", material.roughness, readNonNegative);
+  // Each ray's weight is a fraction of light; an index of refraction or a
+  // cone beyond these makes directions that floats cannot hold.
+  const auto fraction = [](const Field& field) { return readNumberFrom(field, 0.0f, 1.0f); };
+  readIfPresent(map, "reflection", material.reflection, fraction);
+  readIfPresent(map, "transmission", material.transmission, fraction);
+  readIfPresent(map, "ior", material.ior,
+                [](const Field& field) { return readNumberFrom(field, kLeastIor, kGreatestIor); });
+  readIfPresent(map, "roughness", material.roughness,
+                [](const Field& field) { return readNumberFrom(field, 0.0f, kGreatestRoughness); });
   return material;
 }
 
-std::vector<Material> readMaterials(const Field& field,
-                                    const std::filesystem::path& sceneDirectory) {
+std::vector<Material> readMaterials(const Field& field, SceneFiles& files) {
   std::vector<Material> materials;
   for (const MapEntry& entry :
        readMap(field, "a map from material names to materials", "'materials'"))
-    materials.push_back(readMaterial(entry, sceneDirectory));
+    materials.push_back(readMaterial(entry, files));
   return materials;
 }
 
@@ -230,12 +245,16 @@ Scene readScene(const YamlNode& root, std::string source) {
     for (const Field& item : readList(*lights, "a list of lights", "an item of 'lights'"))
       scene.lights.push_back(readLight(item));
   }
-  const std::filesystem::path sceneDirectory = std::filesystem::path(scene.source).parent_path();
+  SceneFiles files(std::filesystem::path(scene.source).parent_path());
   if (const std::optional<Field> materials = map.optional("materials"))
-    scene.materials = readMaterials(*materials, sceneDirectory);
+    scene.materials = readMaterials(*materials, files);
   for (const Field& item :
        readList(map.required("objects"), "a list of objects", "an item of 'objects'"))
-    scene.shapes.push_back(readObject(item, scene.materials, sceneDirectory));
+    scene.shapes.push_back(readObject(item, scene.materials, files));
+  for (const SceneFiles::Warning& warning : files.warnings())
+    scene.warnings.push_back(scene.source + ":" + std::to_string(warning.mark.line + 1) + ":" +
+                             std::to_string(warning.mark.column + 1) +
+                             ": warning: " + warning.message);
   return scene;
 }
 
@@ -266,6 +285,17 @@ Scene loadScene(std::string_view text, std::string sourceName) {
   }
 }
 
+Scene loadSceneStream(std::istream& in, std::string sourceName) {
+  const std::optional<std::string> text = readAtMost(in, kLargestSceneFile);
+  if (in.bad()) throw SceneError(sourceName, "cannot read the scene file");
+  if (!text)
+    throw SceneError(sourceName, "the scene file is larger than the " +
+                                     megabytes(kLargestSceneFile) +
+                                     " that RISE reads; expected a scene, with large meshes in "
+                                     "model files (mesh: {file})");
+  return loadScene(*text, std::move(sourceName));
+}
+
 Scene loadSceneFile(const std::filesystem::path& path) {
   // A directory opens as a file stream on POSIX systems and only fails when read.
   if (std::filesystem::is_directory(path))
@@ -279,10 +309,7 @@ Scene loadSceneFile(const std::filesystem::path& path) {
         errno != 0 ? std::generic_category().message(errno) : "unknown reason";
     throw SceneError(path.string(), "cannot open the scene file (" + cause + ")");
   }
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (file.bad()) throw SceneError(path.string(), "cannot read the scene file");
-  return loadScene(text.str(), path.string());
+  return loadSceneStream(file, path.string());
 }
 
 }  // namespace rise

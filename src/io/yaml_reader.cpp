@@ -1,8 +1,10 @@
 #include "io/yaml_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace rise {
@@ -104,6 +106,20 @@ double readBoundedNumber(const Field& field, Bound bound, std::string_view kind)
 
 }  // namespace
 
+std::string shortNumber(double value) {
+  std::array<char, 32> text{};
+  std::snprintf(text.data(), text.size(), "%.3g", value);
+  std::string written = text.data();
+  // "1e+30" and "1e-05" as "1e30" and "1e-5".
+  if (const std::size_t e = written.find('e'); e != std::string::npos) {
+    std::string exponent = written.substr(e + 1);
+    const bool negative = exponent.starts_with('-');
+    exponent.erase(0, exponent.find_first_not_of("+-0"));
+    written = written.substr(0, e + 1) + (negative ? "-" : "") + exponent;
+  }
+  return written;
+}
+
 std::string joinedWithCommas(const std::vector<std::string>& words) {
   std::string text;
   for (const std::string& word : words) text += (text.empty() ? "" : ", ") + word;
@@ -168,6 +184,13 @@ int readWholeNumber(const Field& field, Bound bound) {
     failExpected(field, expectation + " that is at least " +
                             std::to_string(std::numeric_limits<int>::min()));
   return static_cast<int>(value);
+}
+
+float readNumberFrom(const Field& field, float least, float most) {
+  const float value = readNumber(field);
+  if (value < least || value > most)
+    failExpected(field, "a number from " + shortNumber(least) + " to " + shortNumber(most));
+  return value;
 }
 
 Vec3 readVec3(const Field& field) {

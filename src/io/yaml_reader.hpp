@@ -47,6 +47,9 @@ Field makeField(const YamlNode& node, std::string name, Mark keyMark);
 // "expected <expectation> for <field name>, got <what the value is>".
 [[noreturn]] void failExpected(const Field& field, std::string_view expectation);
 
+// A number as people write it: "0.1", "1.7e30".
+std::string shortNumber(double value);
+
 // "a, b, c".
 std::string joinedWithCommas(const std::vector<std::string>& words);
 
@@ -69,6 +72,8 @@ std::string readName(const Field& field);
 float readNonNegative(const Field& field);
 float readPositive(const Field& field);
 int readPositiveWholeNumber(const Field& field);
+// A number from `least` to `most`, both included.
+float readNumberFrom(const Field& field, float least, float most);
 
 // One of a fixed set of names, with a suggestion for a misspelt one.
 template <typename Choice>

@@ -31,6 +31,9 @@ struct Scene {
   std::vector<std::unique_ptr<Light>> lights;
   std::vector<Material> materials;
   std::vector<std::unique_ptr<Shape>> shapes;
+  // What loading accepted with a fix, one line each for the person who wrote
+  // the scene: "scene.yaml:9:20: warning: ...".
+  std::vector<std::string> warnings;
 
   const Material& materialOf(const Shape& shape) const { return materials[shape.material()]; }
 };
