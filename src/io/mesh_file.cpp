@@ -145,10 +145,6 @@ Mat4 toMat4(const aiMatrix4x4& m) {
   return result;
 }
 
-bool isFinite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 // One Assimp mesh in its own space: its triangles (points and lines are left
 // out) and a unit normal at each vertex: the file's, zero where one of them is
 // unusable, or computed when the file has none.
@@ -201,7 +197,8 @@ MeshGeometry readModel(const std::filesystem::path& path, int md2Keyframe) {
   MeshGeometry model;
   if (scene.mRootNode != nullptr) appendNode(scene, *scene.mRootNode, Mat4(1.0f), model);
   if (model.triangles.empty()) throw MeshFileError("the file has no triangles");
-  if (!std::all_of(model.positions.begin(), model.positions.end(), isFinite))
+  if (!std::all_of(model.positions.begin(), model.positions.end(),
+                   [](const Vec3& v) { return isFinite(v); }))
     throw MeshFileError("a vertex has a coordinate that is not a finite number");
   return model;
 }
