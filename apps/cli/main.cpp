@@ -6,6 +6,7 @@
 // (a scene file error or a wrong option); on status 2 no image is written.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <optional>
 #include <variant>
 
 #include "algorithms/registry.hpp"
@@ -14,6 +15,7 @@
 #include "io/scene_error.hpp"
 #include "progress_bar.hpp"
 #include "render/buffer_images.hpp"
+#include "render/render_limits.hpp"
 #include "settings_options.hpp"
 #include "stats_report.hpp"
 
@@ -68,9 +70,15 @@ std::variant<Job, int> prepare(const SettingsOptions& options) {
   return job;
 }
 
-RenderResult renderWithProgress(const Renderer& renderer, const Job& job) {
-  ProgressBar progress(std::string(renderer.name()));
-  return renderTimed(renderer, job.scene, job.settings, progress);
+// The render, or nothing when it would exceed a limit of its work (said).
+std::optional<RenderResult> renderWithProgress(const Renderer& renderer, const Job& job) {
+  try {
+    ProgressBar progress(std::string(renderer.name()));
+    return renderTimed(renderer, job.scene, job.settings, progress);
+  } catch (const RenderLimitError& error) {  // the bar is erased by now
+    std::cerr << "rise: " << error.what() << "\n";
+    return std::nullopt;
+  }
 }
 
 RenderDescription describe(const Job& job, std::string_view algorithm) {
@@ -124,7 +132,9 @@ int render(const RenderOptions& options, const CLI::App& command) {
   const Job& job = std::get<Job>(prepared);
   noteUnreadOptions(command, algorithm);
 
-  const RenderResult result = renderWithProgress(renderer, job);
+  const std::optional<RenderResult> rendered = renderWithProgress(renderer, job);
+  if (!rendered) return kExitBadInput;
+  const RenderResult& result = *rendered;
   const std::filesystem::path output =
       options.output.empty() ? defaultOutput(options.settings.scenePath, ".png") : options.output;
   const RenderDescription description = describe(job, renderer.name());
@@ -153,7 +163,9 @@ int compare(const CompareOptions& options) {
         std::find(options.algorithms.begin(), options.algorithms.end(), name) ==
             options.algorithms.end())
       continue;
-    renders.push_back({&renderer->description(), renderWithProgress(*renderer, job)});
+    std::optional<RenderResult> rendered = renderWithProgress(*renderer, job);
+    if (!rendered) return kExitBadInput;
+    renders.push_back({&renderer->description(), *std::move(rendered)});
     std::cerr << name << ": " << renders.back().result.stats.value("render_seconds") << " s\n";
   }
   const std::filesystem::path directory =

@@ -38,6 +38,7 @@
 #include "raster/bands.hpp"
 #include "raster/polygon_clipping.hpp"
 #include "raster/polygon_coverage.hpp"
+#include "render/render_limits.hpp"
 
 namespace rise {
 
@@ -58,8 +59,9 @@ enum Test { kDepth, kXExtent, kYExtent, kBehindPlane, kInFrontOfPlane, kProjecti
 constexpr std::array<const char*, kTestCount> kTestNames = {
     "depth", "x_extent", "y_extent", "behind_plane", "front_of_plane", "projection"};
 
-// Corners this close to a plane, relative to their inverse depth, are on it:
-// the corners two faces share lie on both faces' planes, up to rounding.
+// Corners this close to a plane, relative to the polygon's nearest inverse
+// depth, are on it: the corners two faces share lie on both faces' planes,
+// up to rounding.
 constexpr float kPlaneTolerance = 1e-5f;
 // Images overlapping by less than this, in pixels, only touch.
 constexpr float kOverlapTolerance = 1e-4f;
@@ -97,11 +99,12 @@ struct PlaneSides {
   bool someBehind = false;
 };
 
-PlaneSides planeSides(std::span<const Vec3> corners, const glm::vec4& plane) {
+// `tolerance` is the polygon's own: the one its split uses too, so that a
+// piece of a split never lies on both sides of the plane that cut it.
+PlaneSides planeSides(std::span<const Vec3> corners, const glm::vec4& plane, float tolerance) {
   PlaneSides sides;
   for (const Vec3& corner : corners) {
     const float distance = signedDistance(plane, corner);
-    const float tolerance = kPlaneTolerance * corner.z;
     sides.someInFront |= distance > tolerance;
     sides.someBehind |= distance < -tolerance;
   }
@@ -194,8 +197,10 @@ class DepthSorter {
   explicit DepthSorter(const ScreenGeometry& screen) : screen_(screen) {
     pieces_.corners = screen.corners;
     pieces_.polygons = screen.polygons;
-    for (const ScreenPolygon& polygon : pieces_.polygons)
+    for (const ScreenPolygon& polygon : pieces_.polygons) {
       extents_.push_back(extentOf(pieces_.cornersOf(polygon)));
+      tolerances_.push_back(kPlaneTolerance * extents_.back().nearest);
+    }
     marked_.assign(pieces_.polygons.size(), false);
   }
 
@@ -207,14 +212,13 @@ class DepthSorter {
                      [&](int a, int b) { return extents_[a].farthest < extents_[b].farthest; });
     WaitingList waiting(std::move(sorted), extents_);
     std::vector<int> order;
-    std::vector<int> markedThisRound;
     while (!waiting.isEmpty()) {
-      if (!resolveFront(waiting, markedThisRound)) continue;
+      if (!resolveFront(waiting)) continue;
       order.push_back(waiting.front());
       waiting.popFront();
       // A cycle is a polygon moved twice before anything could be painted.
-      for (int piece : markedThisRound) marked_[piece] = false;
-      markedThisRound.clear();
+      for (int piece : markedThisRound_) marked_[piece] = false;
+      markedThisRound_.clear();
     }
     return order;
   }
@@ -226,7 +230,7 @@ class DepthSorter {
   // Checks the front polygon against the polygons after it. Returns true
   // when it can be painted; otherwise it has changed the list (moved a
   // polygon to the front, or split one) and the new front must be checked.
-  bool resolveFront(WaitingList& waiting, std::vector<int>& markedThisRound) {
+  bool resolveFront(WaitingList& waiting) {
     const int p = waiting.front();
     for (std::size_t k = 1; k < waiting.size(); ++k) {
       const int q = waiting.at(k);
@@ -236,16 +240,13 @@ class DepthSorter {
       if (!marked_[q] && cannotHideByDepthOrPlanes(q, p)) {
         // Q must be painted before P.
         ++counters_.moves;
-        marked_[q] = true;
-        markedThisRound.push_back(q);
+        mark(q);
         waiting.moveToFront(k);
         return false;
       }
       if (split(p, q, waiting, 0) || split(q, p, waiting, k) ||
-          (marked_[q] && splitAcrossCycle(p, waiting, markedThisRound))) {
-        ++counters_.splits;
+          (marked_[q] && splitAcrossCycle(p, waiting)))
         return false;
-      }
       ++counters_.unresolved;
     }
     return true;
@@ -254,7 +255,9 @@ class DepthSorter {
   // P and Q close a cycle of overlaps, but each lies wholly on one side of
   // the other's plane: cut the cycle at another of its polygons, splitting P
   // along its plane or it along P's.
-  bool splitAcrossCycle(int p, WaitingList& waiting, const std::vector<int>& cycle) {
+  bool splitAcrossCycle(int p, WaitingList& waiting) {
+    // Splitting marks pieces, which joins them to the cycle: walk a copy.
+    const std::vector<int> cycle = markedThisRound_;
     for (int other : cycle) {
       const std::size_t position = waiting.find(other);
       if (position == 0 || position >= waiting.size()) continue;
@@ -264,7 +267,14 @@ class DepthSorter {
   }
 
   bool cannotHide(int p, int q) {
-    ++counters_.comparisons;
+    if (++counters_.comparisons > kMostDepthSortComparisons)
+      throw RenderLimitError("depth sort needs more than " +
+                             std::to_string(kMostDepthSortComparisons) +
+                             " comparisons of pairs of polygons to order this scene's " +
+                             std::to_string(screen_.polygons.size()) +
+                             " polygons; expected a scene it can order within that: render it with "
+                             "z-buffer or scanline, or "
+                             "with fewer polygons (--tessellation)");
     for (int test = 0; test < kTestCount; ++test) {
       if (!passes(static_cast<Test>(test), p, q)) continue;
       ++counters_.settledBy[test];
@@ -285,9 +295,9 @@ class DepthSorter {
       case kYExtent:
         return a.high.y <= b.low.y || b.high.y <= a.low.y;
       case kBehindPlane:
-        return !planeSides(cornersOf(p), planeOf(q)).someInFront;
+        return !planeSides(cornersOf(p), planeOf(q), tolerances_[p]).someInFront;
       case kInFrontOfPlane:
-        return !planeSides(cornersOf(q), planeOf(p)).someBehind;
+        return !planeSides(cornersOf(q), planeOf(p), tolerances_[q]).someBehind;
       case kProjection:
         return !imagesOverlap(cornersOf(p), cornersOf(q));
       case kTestCount:
@@ -301,27 +311,47 @@ class DepthSorter {
     return passes(kDepth, p, q) || passes(kBehindPlane, p, q) || passes(kInFrontOfPlane, p, q);
   }
 
+  void mark(int piece) {
+    marked_[piece] = true;
+    markedThisRound_.push_back(piece);
+  }
+
   // Splits the piece at `position` in the list along `other`'s plane if it
-  // lies on both sides of it, the part behind the plane first.
+  // lies on both sides of it, the part behind the plane first. The pieces
+  // keep the piece's tolerance, so that each lies on one side of that plane
+  // for good (a piece is never cut twice by one plane), and its mark: as
+  // Newell's polygons, a piece of one that was moved is split again, never
+  // moved again, until something is painted.
   bool split(int piece, int other, WaitingList& waiting, std::size_t position) {
     const std::span<const Vec3> corners = cornersOf(piece);
-    if (const PlaneSides sides = planeSides(corners, planeOf(other));
+    const float tolerance = tolerances_[piece];
+    if (const PlaneSides sides = planeSides(corners, planeOf(other), tolerance);
         !(sides.someInFront && sides.someBehind))
       return false;
-    float tolerance = 0.0f;
-    for (const Vec3& corner : corners) tolerance = std::max(tolerance, kPlaneTolerance * corner.z);
     const std::vector<Vec3> copy(corners.begin(), corners.end());
     splitPolygon(copy, planeOf(other), tolerance, front_, behind_);
-    const int face = pieces_.polygons[piece].face;
-    const int behind = addPiece(face, behind_);
-    waiting.replace(position, behind, addPiece(face, front_));
+    // Where a crossing rounds onto a corner off the plane (the plane nearly
+    // along the edge), the cut cannot part the sides: no split.
+    if (planeSides(behind_, planeOf(other), tolerance).someInFront ||
+        planeSides(front_, planeOf(other), tolerance).someBehind)
+      return false;
+    if (++counters_.splits > kMostDepthSortSplits)
+      throw RenderLimitError("depth sort needs more than " + std::to_string(kMostDepthSortSplits) +
+                             " splits to order this scene's " +
+                             std::to_string(screen_.polygons.size()) +
+                             " polygons; expected a scene it can order within that: render it "
+                             "with z-buffer or scanline");
+    const int behind = addPiece(piece, behind_);
+    waiting.replace(position, behind, addPiece(piece, front_));
     return true;
   }
 
-  int addPiece(int face, std::span<const Vec3> corners) {
-    const int piece = pieces_.addPolygon(face, corners);
+  int addPiece(int parent, std::span<const Vec3> corners) {
+    const int piece = pieces_.addPolygon(pieces_.polygons[parent].face, corners);
     extents_.push_back(extentOf(corners));
+    tolerances_.push_back(tolerances_[parent]);
     marked_.push_back(false);
+    if (marked_[parent]) mark(piece);
     return piece;
   }
 
@@ -333,7 +363,9 @@ class DepthSorter {
   const ScreenGeometry& screen_;
   ScreenGeometry pieces_;  // the polygons, then the pieces that splits make
   std::vector<Extent> extents_;
+  std::vector<float> tolerances_;  // how near a plane a piece's corners count as on it
   std::vector<bool> marked_;
+  std::vector<int> markedThisRound_;
   std::vector<Vec3> front_, behind_;
   DepthSortCounters counters_;
 };
