@@ -13,6 +13,7 @@
 #include "io/image_io.hpp"
 #include "io/mesh_file.hpp"
 #include "io/scene_file.hpp"
+#include "support/png_header_testing.hpp"
 #include "support/temporary_folder_testing.hpp"
 
 namespace rise {
@@ -53,17 +54,6 @@ class ImageLimits : public TemporaryFolderTest {
     return directory_ / name;
   }
 };
-
-// The signature and the header chunk of a PNG image of width x height RGB
-// pixels, and nothing else.
-std::string pngHeader(std::uint32_t width, std::uint32_t height) {
-  const auto bigEndian = [](std::uint32_t value) {
-    return std::string{static_cast<char>(value >> 24), static_cast<char>(value >> 16),
-                       static_cast<char>(value >> 8), static_cast<char>(value)};
-  };
-  return std::string("\x89PNG\r\n\x1a\n", 8) + bigEndian(13) + "IHDR" + bigEndian(width) +
-         bigEndian(height) + std::string("\x08\x02\x00\x00\x00", 5) + bigEndian(0);
-}
 
 TEST_F(ImageLimits, AnImageOfMorePixelsThanRiseReadsIsRefusedBeforeItIsDecoded) {
   const fs::path huge = write("huge.png", pngHeader(10000, 10000));

@@ -1,15 +1,16 @@
 #include "comparison_report.hpp"
 
 #include <algorithm>
-#include <cerrno>
-#include <cstring>
-#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
 
+#include "io/atomic_file.hpp"
+
 namespace rise::cli {
 namespace {
+
+constexpr const char* kReports[] = {"results.csv", "results.md", "index.html"};
 
 // Every statistic any algorithm reported, in the order they first appear.
 std::vector<std::string> statisticNames(const std::vector<ComparedRender>& renders) {
@@ -61,13 +62,6 @@ std::string escapeHtml(const std::string& text) {
     }
   }
   return escaped;
-}
-
-void writeText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream file(path);
-  file << text;
-  if (!file)
-    throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
 }
 
 std::string csv(const std::vector<ComparedRender>& renders, const std::vector<std::string>& names) {
@@ -160,6 +154,15 @@ std::string html(const std::string& sceneName, const std::vector<ComparedRender>
 
 }  // namespace
 
+std::vector<std::filesystem::path> comparisonFiles(
+    const std::filesystem::path& directory, const std::vector<std::string_view>& algorithms) {
+  std::vector<std::filesystem::path> files;
+  for (std::string_view algorithm : algorithms)
+    files.push_back(directory / (std::string(algorithm) + ".png"));
+  for (const char* report : kReports) files.push_back(directory / report);
+  return files;
+}
+
 std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& directory,
                                                    const std::string& sceneName,
                                                    const std::vector<ComparedRender>& renders,
@@ -169,21 +172,17 @@ std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& 
   if (error)
     throw std::runtime_error(directory.string() + ": cannot create (" + error.message() + ")");
 
-  std::vector<std::filesystem::path> written;
-  for (const ComparedRender& render : renders) {
-    written.push_back(directory / (std::string(render.algorithm->name) + ".png"));
-    writeImage(render.result.image, written.back(), encoding);
-  }
+  std::vector<std::string_view> algorithms;
+  for (const ComparedRender& render : renders) algorithms.push_back(render.algorithm->name);
+  const std::vector<std::filesystem::path> files = comparisonFiles(directory, algorithms);
+  for (std::size_t i = 0; i < renders.size(); ++i)
+    writeImage(renders[i].result.image, files[i], encoding);
   const std::vector<std::string> names = statisticNames(renders);
-  const std::pair<const char*, std::string> reports[] = {
-      {"results.csv", csv(renders, names)},
-      {"results.md", markdown(sceneName, renders, names)},
-      {"index.html", html(sceneName, renders, names)}};
-  for (const auto& [file, text] : reports) {
-    written.push_back(directory / file);
-    writeText(written.back(), text);
-  }
-  return written;
+  const std::string reports[] = {csv(renders, names), markdown(sceneName, renders, names),
+                                 html(sceneName, renders, names)};
+  for (std::size_t i = 0; i < std::size(reports); ++i)
+    writeFileAtomically(files[renders.size() + i], reports[i]);
+  return files;
 }
 
 }  // namespace rise::cli

@@ -13,6 +13,7 @@
 #include "comparison_report.hpp"
 #include "io/image_io.hpp"
 #include "io/scene_error.hpp"
+#include "output_check.hpp"
 #include "progress_bar.hpp"
 #include "render/buffer_images.hpp"
 #include "render/render_limits.hpp"
@@ -55,19 +56,31 @@ struct Job {
   RenderSettings settings;
 };
 
-std::variant<Job, int> prepare(const SettingsOptions& options) {
+// Prepares the job for algorithms of these families, refusing it when a
+// render would exceed its limits (render/render_limits.hpp).
+std::variant<Job, int> prepare(const SettingsOptions& options, std::vector<Family> families) {
   Job job;
   try {
     job.scene = loadScene(options.scenePath);
+    for (const std::string& warning : job.scene.warnings) std::cerr << warning << "\n";
     job.settings = settingsFor(job.scene, options.request);
+    for (Family family : families) checkRenderFits(job.scene, job.settings, family);
   } catch (const SceneError& error) {
     std::cerr << error.what() << "\n";
     return kExitBadInput;
-  } catch (const SettingsError& error) {
+  } catch (const std::runtime_error& error) {  // SettingsError, RenderLimitError
     std::cerr << "rise: " << error.what() << "\n";
     return kExitBadInput;
   }
   return job;
+}
+
+// Says what is wrong with the files a command will write, before it renders.
+bool outputsAreWritable(const std::vector<PlannedOutput>& outputs, const std::string& scenePath,
+                        bool foldersAreMade = false) {
+  const std::string problem = outputsProblem(outputs, scenePath, foldersAreMade);
+  if (!problem.empty()) std::cerr << "rise: " << problem << "\n";
+  return problem.empty();
 }
 
 // The render, or nothing when it would exceed a limit of its work (said).
@@ -127,7 +140,21 @@ int render(const RenderOptions& options, const CLI::App& command) {
       return kExitBadInput;
     }
   }
-  std::variant<Job, int> prepared = prepare(options.settings);
+  const std::filesystem::path output =
+      options.output.empty() ? defaultOutput(options.settings.scenePath, ".png") : options.output;
+  try {
+    checkImageFormat(output);
+  } catch (const ImageFileError& error) {
+    std::cerr << "rise: -o " << error.what() << "\n";
+    return kExitBadInput;
+  }
+  std::vector<PlannedOutput> outputs{{output, "-o"}};
+  for (const std::string& name : options.buffers)
+    outputs.push_back({bufferPath(output, name), "--aov " + name});
+  if (!options.statsPath.empty()) outputs.push_back({options.statsPath, "--stats"});
+  if (!outputsAreWritable(outputs, options.settings.scenePath)) return kExitBadInput;
+
+  std::variant<Job, int> prepared = prepare(options.settings, {algorithm.family});
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   const Job& job = std::get<Job>(prepared);
   noteUnreadOptions(command, algorithm);
@@ -135,8 +162,6 @@ int render(const RenderOptions& options, const CLI::App& command) {
   const std::optional<RenderResult> rendered = renderWithProgress(renderer, job);
   if (!rendered) return kExitBadInput;
   const RenderResult& result = *rendered;
-  const std::filesystem::path output =
-      options.output.empty() ? defaultOutput(options.settings.scenePath, ".png") : options.output;
   const RenderDescription description = describe(job, renderer.name());
   try {
     writeImage(result.image, output, options.encoding);
@@ -152,24 +177,42 @@ int render(const RenderOptions& options, const CLI::App& command) {
 }
 
 int compare(const CompareOptions& options) {
-  std::variant<Job, int> prepared = prepare(options.settings);
+  std::vector<const Renderer*> renderers;
+  std::vector<std::string_view> names;
+  std::vector<Family> families;
+  for (const Renderer* renderer : allRenderers()) {
+    if (!options.algorithms.empty() &&
+        std::find(options.algorithms.begin(), options.algorithms.end(), renderer->name()) ==
+            options.algorithms.end())
+      continue;
+    renderers.push_back(renderer);
+    names.push_back(renderer->name());
+    families.push_back(renderer->description().family);
+  }
+  const std::filesystem::path directory =
+      options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
+  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory)) {
+    std::cerr << "rise: -o " << directory.string() << ": is a file; expected a folder to write "
+              << "the comparison into\n";
+    return kExitBadInput;
+  }
+  std::vector<PlannedOutput> outputs;
+  for (const std::filesystem::path& file : comparisonFiles(directory, names))
+    outputs.push_back({file, "-o " + directory.string() + " (" + file.filename().string() + ")"});
+  if (!outputsAreWritable(outputs, options.settings.scenePath, true)) return kExitBadInput;
+
+  std::variant<Job, int> prepared = prepare(options.settings, families);
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   const Job& job = std::get<Job>(prepared);
 
   std::vector<ComparedRender> renders;
-  for (const Renderer* renderer : allRenderers()) {
-    const std::string name(renderer->name());
-    if (!options.algorithms.empty() &&
-        std::find(options.algorithms.begin(), options.algorithms.end(), name) ==
-            options.algorithms.end())
-      continue;
+  for (const Renderer* renderer : renderers) {
     std::optional<RenderResult> rendered = renderWithProgress(*renderer, job);
     if (!rendered) return kExitBadInput;
     renders.push_back({&renderer->description(), *std::move(rendered)});
-    std::cerr << name << ": " << renders.back().result.stats.value("render_seconds") << " s\n";
+    std::cerr << renderer->name() << ": " << renders.back().result.stats.value("render_seconds")
+              << " s\n";
   }
-  const std::filesystem::path directory =
-      options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
   try {
     writeComparison(directory, job.scene.source, renders, options.encoding);
   } catch (const std::exception& error) {
@@ -180,16 +223,16 @@ int compare(const CompareOptions& options) {
   return 0;
 }
 
+// Loads the scene and checks that its own image can be rendered by every
+// algorithm, as `rise render` would with no options.
 int validate(const std::string& scenePath) {
-  try {
-    const Scene scene = loadScene(scenePath);
-    std::cout << scene.source << ": ok (" << scene.shapes.size() << " objects, "
-              << scene.lights.size() << " lights, " << scene.materials.size() << " materials)\n";
-    return 0;
-  } catch (const SceneError& error) {
-    std::cerr << error.what() << "\n";
-    return kExitBadInput;
-  }
+  std::variant<Job, int> prepared =
+      prepare({scenePath, {}}, {Family::VisibleSurface, Family::RayTracing});
+  if (const int* status = std::get_if<int>(&prepared)) return *status;
+  const Scene& scene = std::get<Job>(prepared).scene;
+  std::cout << scene.source << ": ok (" << scene.shapes.size() << " objects, "
+            << scene.lights.size() << " lights, " << scene.materials.size() << " materials)\n";
+  return 0;
 }
 
 void listAlgorithms() {
@@ -288,6 +331,16 @@ int run(int argc, char** argv) {
   const CLI::App* algorithmsCommand =
       app.add_subcommand("algorithms", "List the algorithms, each with its citation");
 
+  // CLI11 takes an unknown first word for a stray argument and asks for a
+  // subcommand; say what was typed and what there is.
+  std::vector<std::string> commands;
+  for (const CLI::App* command : app.get_subcommands({})) commands.push_back(command->get_name());
+  if (argc > 1 && argv[1][0] != '-' &&
+      std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
+    std::cerr << "rise: unknown command '" << argv[1] << "'; expected one of: " << joined(commands)
+              << " (rise --help)\n";
+    return kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

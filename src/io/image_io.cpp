@@ -1,6 +1,5 @@
-// Writing and reading image files. Every write goes to a temporary file in the
-// target's directory and is renamed over the target only when complete, so a
-// viewer or a later run never sees half an image.
+// Writing and reading image files. Every write goes through an AtomicFile, so
+// a viewer or a later run never sees half an image.
 #include "io/image_io.hpp"
 
 #include <ImfChannelList.h>
@@ -13,7 +12,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -26,6 +24,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/atomic_file.hpp"
 #include "io/file_limits.hpp"
 #include "io/pcx_file.hpp"
 
@@ -50,66 +49,6 @@ ImageFileError fileError(const std::filesystem::path& path, std::string_view pro
 std::string because(std::string_view problem, std::string_view reason) {
   return std::string(problem) + " (" + std::string(reason) + ")";
 }
-
-// A file that appears under its final name only once it is complete. It is
-// written under a name unique to this process and call, in the target's own
-// directory so that the final rename stays on one file system and is atomic.
-// Destroyed without commit(), it deletes itself.
-class TemporaryFile {
- public:
-  explicit TemporaryFile(std::filesystem::path target)
-      : target_(std::move(target)), temporary_(uniqueNameBeside(target_)) {
-    file_ = std::fopen(temporary_.c_str(), "wb");
-    if (file_ == nullptr) throw fileError(target_, because("cannot write", std::strerror(errno)));
-  }
-
-  ~TemporaryFile() {
-    if (file_ != nullptr) std::fclose(file_);
-    if (!committed_) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary_, ignored);
-    }
-  }
-
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-
-  // Failures are remembered and reported by commit() rather than thrown:
-  // OpenEXR writes its final offsets from a destructor, which cannot throw.
-  void write(const void* data, std::size_t size) {
-    if (error_ == 0 && std::fwrite(data, 1, size, file_) != size) error_ = errno;
-  }
-
-  std::uint64_t position() const { return static_cast<std::uint64_t>(ftello(file_)); }
-
-  void seek(std::uint64_t position) {
-    if (error_ == 0 && fseeko(file_, static_cast<off_t>(position), SEEK_SET) != 0) error_ = errno;
-  }
-
-  void commit() {
-    if (std::fclose(file_) != 0 && error_ == 0) error_ = errno;
-    file_ = nullptr;
-    if (error_ != 0) throw fileError(target_, because("cannot write", std::strerror(error_)));
-    std::error_code renameError;
-    std::filesystem::rename(temporary_, target_, renameError);
-    if (renameError) throw fileError(target_, because("cannot write", renameError.message()));
-    committed_ = true;
-  }
-
- private:
-  static std::filesystem::path uniqueNameBeside(const std::filesystem::path& target) {
-    static std::atomic<unsigned> writesStarted{0};
-    std::filesystem::path name = target;
-    name += ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(writesStarted++);
-    return name;
-  }
-
-  std::filesystem::path target_;
-  std::filesystem::path temporary_;
-  std::FILE* file_ = nullptr;
-  int error_ = 0;
-  bool committed_ = false;
-};
 
 enum class ImageFormat { Png, Ppm, Exr };
 
@@ -147,17 +86,17 @@ std::vector<std::uint8_t> rgbBytes(const Image& image, Encoding encoding) {
 }
 
 void writePng(const Image& image, Encoding encoding, const std::filesystem::path& path,
-              TemporaryFile& file) {
+              AtomicFile& file) {
   const std::vector<std::uint8_t> bytes = rgbBytes(image, encoding);
   auto append = [](void* context, void* data, int size) {
-    static_cast<TemporaryFile*>(context)->write(data, static_cast<std::size_t>(size));
+    static_cast<AtomicFile*>(context)->write(data, static_cast<std::size_t>(size));
   };
   if (stbi_write_png_to_func(append, &file, image.width(), image.height(), 3, bytes.data(),
                              image.width() * 3) == 0)
     throw fileError(path, "cannot encode PNG");
 }
 
-void writePpm(const Image& image, Encoding encoding, TemporaryFile& file) {
+void writePpm(const Image& image, Encoding encoding, AtomicFile& file) {
   const std::string header =
       "P6\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n255\n";
   const std::vector<std::uint8_t> bytes = rgbBytes(image, encoding);
@@ -168,7 +107,7 @@ void writePpm(const Image& image, Encoding encoding, TemporaryFile& file) {
 // OpenEXR's output stream, writing into the temporary file.
 class ExrStream : public Imf::OStream {
  public:
-  ExrStream(TemporaryFile& file, const std::filesystem::path& path)
+  ExrStream(AtomicFile& file, const std::filesystem::path& path)
       : Imf::OStream(path.c_str()), file_(file) {}
 
   void write(const char bytes[], int count) override {
@@ -178,10 +117,10 @@ class ExrStream : public Imf::OStream {
   void seekp(uint64_t position) override { file_.seek(position); }
 
  private:
-  TemporaryFile& file_;
+  AtomicFile& file_;
 };
 
-void writeExr(const Image& image, const std::filesystem::path& path, TemporaryFile& file) {
+void writeExr(const Image& image, const std::filesystem::path& path, AtomicFile& file) {
   static_assert(sizeof(Color) == 3 * sizeof(float), "Color must be three packed floats");
   // A frame buffer slice takes a mutable pointer, but an output file only reads it.
   char* pixels = const_cast<char*>(reinterpret_cast<const char*>(image.pixels().data()));
@@ -207,21 +146,27 @@ void writeExr(const Image& image, const std::filesystem::path& path, TemporaryFi
 
 }  // namespace
 
+void checkImageFormat(const std::filesystem::path& path) { formatOf(path); }
+
 void writeImage(const Image& image, const std::filesystem::path& path, Encoding encoding) {
   const ImageFormat format = formatOf(path);
-  TemporaryFile file(path);
-  switch (format) {
-    case ImageFormat::Png:
-      writePng(image, encoding, path, file);
-      break;
-    case ImageFormat::Ppm:
-      writePpm(image, encoding, file);
-      break;
-    case ImageFormat::Exr:
-      writeExr(image, path, file);
-      break;
+  try {
+    AtomicFile file(path);
+    switch (format) {
+      case ImageFormat::Png:
+        writePng(image, encoding, path, file);
+        break;
+      case ImageFormat::Ppm:
+        writePpm(image, encoding, file);
+        break;
+      case ImageFormat::Exr:
+        writeExr(image, path, file);
+        break;
+    }
+    file.commit();
+  } catch (const OutputFileError& error) {
+    throw ImageFileError(error.what());
   }
-  file.commit();
 }
 
 namespace {

@@ -34,6 +34,10 @@ class ImageFileError : public std::runtime_error {
 void writeImage(const Image& image, const std::filesystem::path& path,
                 Encoding encoding = Encoding::Srgb);
 
+// Throws the ImageFileError that writeImage would for a path whose extension
+// names no format it writes, before anything is rendered for it.
+void checkImageFormat(const std::filesystem::path& path);
+
 // Reads an image file and decodes it to linear colours: PCX (the skins of MD2
 // models) by RISE's own reader, PNG, JPEG, TGA, BMP, PNM and the others
 // through stb_image, each decoded by `encoding` (sRGB for colours, linear for

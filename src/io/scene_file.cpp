@@ -69,8 +69,15 @@ ImageSpec readImage(const Field& field) {
       field, "image",
       {"width", "height", "background", "samples", "pattern", "filter", "adaptive_threshold"});
   ImageSpec spec;
-  readIfPresent(image, "width", spec.width, readPositiveWholeNumber);
-  readIfPresent(image, "height", spec.height, readPositiveWholeNumber);
+  const auto side = [](const Field& field) {
+    const int pixels = readPositiveWholeNumber(field);
+    if (pixels > kLargestImageSide)
+      failExpected(field,
+                   "a whole number of pixels from 1 to " + std::to_string(kLargestImageSide));
+    return pixels;
+  };
+  readIfPresent(image, "width", spec.width, side);
+  readIfPresent(image, "height", spec.height, side);
   readIfPresent(image, "background", spec.background, readColor);
   spec.sampling = readSampling(image, field);
   return spec;

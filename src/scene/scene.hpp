@@ -13,6 +13,11 @@
 
 namespace rise {
 
+// The longest side of an image, in pixels: its pixels then count within an
+// int, and a render's memory is checked against the machine's besides
+// (render/render_limits.hpp).
+inline constexpr int kLargestImageSide = 32768;
+
 // The image a scene asks for; the command line may override its size.
 struct ImageSpec {
   int width = 640;
