@@ -48,3 +48,17 @@ enter_repository() {
   out="$(realpath -m "$out")"
   cd "$(dirname "${BASH_SOURCE[0]}")/.." || die "cannot enter the repository"
 }
+
+# Prints the number under `key` in the JSON file, to the millisecond.
+json_seconds() {
+  python3 -c 'import json, sys; print("%.3f" % json.load(open(sys.argv[1]))[sys.argv[2]])' \
+    "$1" "$2" 2>/dev/null || die "no $2 in $1"
+}
+
+# The smallest of the numbers on standard input.
+smallest() { sort -g | head -n 1; }
+
+# a / b to two decimals, or "-" when b is not a positive number.
+ratio() {
+  awk -v a="$1" -v b="$2" 'BEGIN { if (b != "-" && b > 0) printf "%.2f", a / b; else print "-" }'
+}

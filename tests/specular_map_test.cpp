@@ -10,6 +10,8 @@
 #include "io/image_io.hpp"
 #include "io/scene_file.hpp"
 #include "scene/scene.hpp"
+#include "shading/bump_mapping.hpp"
+#include "shading/material_at_point.hpp"
 #include "shading/phong.hpp"
 #include "support/raster_testing.hpp"
 #include "support/temporary_folder_testing.hpp"
@@ -97,7 +99,7 @@ TEST_F(SpecularMapFile, ReadsAnImageLinearly) {
          "objects:\n  - sphere: {center: [0, 0, 0], radius: 1, material: half}\n";
   const Scene scene = loadSceneFile(directory_ / "scene.yaml");
   const SurfacePoint point(Vec3(0, 0, -1), Vec3(0, 0, -1), Vec2(0.3f, 0.6f));
-  const Color ks = scene.materials[0].colorsAt(point).ks;
+  const Color ks = surfaceColors(scene.materials[0], point).ks;
   EXPECT_NEAR(ks.r, 0.6f * 128.0f / 255.0f, 1e-5f);
   EXPECT_NEAR(ks.b, 0.6f * 128.0f / 255.0f, 1e-5f);
 }

@@ -18,6 +18,8 @@
 #include "scene/textures/image_texture.hpp"
 #include "scene/textures/normal_map.hpp"
 #include "scene/textures/perlin_noise.hpp"
+#include "shading/bump_mapping.hpp"
+#include "shading/material_at_point.hpp"
 #include "support/raster_testing.hpp"
 #include "support/shape_testing.hpp"
 #include "support/temporary_folder_testing.hpp"
@@ -63,7 +65,7 @@ TEST_F(TextureSceneFile, ReadsAnImageRelativeToTheSceneFile) {
   const Scene scene = load("{image: textures/red.png, filter: nearest, scale: 2, rotate: 30}");
   ASSERT_TRUE(scene.materials[0].texture);
   SurfacePoint point(Vec3(0.0f), Vec3(0, 0, -1), Vec2(0.3f, 0.6f));
-  expectColor(scene.materials[0].colorAt(point), Color(1, 0, 0));
+  expectColor(surfaceColors(scene.materials[0], point).color, Color(1, 0, 0));
 }
 
 TEST_F(TextureSceneFile, ReadsTheProceduralTextures) {
@@ -73,7 +75,7 @@ TEST_F(TextureSceneFile, ReadsTheProceduralTextures) {
   }
   const Scene checker = load("{checker: {colors: [[0, 0, 0], [1, 1, 1]], size: 0.5}}");
   SurfacePoint point(Vec3(0.0f), Vec3(0, 0, -1), Vec2(0.75f, 0.25f));
-  expectColor(checker.materials[0].colorAt(point), Color(1, 1, 1));
+  expectColor(surfaceColors(checker.materials[0], point).color, Color(1, 1, 1));
 }
 
 TEST_F(TextureSceneFile, ReadsANormalMapLinearly) {
@@ -90,7 +92,7 @@ TEST_F(TextureSceneFile, ReadsANormalMapLinearly) {
   surface.dpdu = Vec3(1, 0, 0);
   surface.dpdv = Vec3(0, 0, -1);
   const float stored = 2.0f * 188.0f / 255.0f - 1.0f;
-  EXPECT_TRUE(shape_testing::nearlyEqual(scene.materials[0].shadingNormalAt(surface),
+  EXPECT_TRUE(shape_testing::nearlyEqual(shadingNormal(scene.materials[0], surface),
                                          glm::normalize(Vec3(stored, 1.0f, -stored)), 1e-3f));
 }
 
@@ -203,7 +205,7 @@ TEST_F(TextureSceneFile, DressesAnUntexturedMd2ModelInItsSkin) {
   // The skin's texel at the middle of its first row, where v = 1.
   const Image skin = readImage(kSydney / "sydney.pcx");
   SurfacePoint top(Vec3(0.0f), Vec3(0, 1, 0), Vec2((154.0f + 0.5f) / 308.0f, 1.0f - 0.5f / 193.0f));
-  expectColor(scene.materials[2].colorAt(top), skin.at(154, 0));
+  expectColor(surfaceColors(scene.materials[2], top).color, skin.at(154, 0));
 }
 
 TEST_F(TextureSceneFile, WearsASkinWithoutItsPaletteMarkerAndWarns) {

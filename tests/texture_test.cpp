@@ -18,6 +18,8 @@
 #include "scene/textures/normal_map.hpp"
 #include "scene/textures/perlin_noise.hpp"
 #include "scene/textures/transformed_texture.hpp"
+#include "shading/bump_mapping.hpp"
+#include "shading/material_at_point.hpp"
 #include "support/shape_testing.hpp"
 
 namespace rise {
@@ -224,12 +226,12 @@ TEST(BumpMap, TiltsThePlanesNormalAgainstTheSlope) {
   surface.dpdu = Vec3(1, 0, 0);
   surface.dpdv = Vec3(0, 0, -1);
   const BumpMap bump(std::make_shared<Ramp>(0.25f), 2.0f, Vec2(1e-3f));
-  EXPECT_TRUE(shape_testing::nearlyEqual(bump.shadingNormalAt(surface),
-                                         glm::normalize(Vec3(-0.5f, 1.0f, 0.0f))));
+  EXPECT_TRUE(
+      shape_testing::nearlyEqual(bumped(bump, surface), glm::normalize(Vec3(-0.5f, 1.0f, 0.0f))));
   // Texture coordinates stretched twice as far: half the slope in space.
   surface.dpdu = Vec3(2, 0, 0);
-  EXPECT_TRUE(shape_testing::nearlyEqual(bump.shadingNormalAt(surface),
-                                         glm::normalize(Vec3(-0.25f, 1.0f, 0.0f))));
+  EXPECT_TRUE(
+      shape_testing::nearlyEqual(bumped(bump, surface), glm::normalize(Vec3(-0.25f, 1.0f, 0.0f))));
 }
 
 // One colour everywhere.
@@ -248,7 +250,7 @@ TEST(NormalMap, ReadsTheNormalInTheTangentFrame) {
   surface.dpdu = Vec3(2, 0, 0);
   surface.dpdv = Vec3(0, 0, -1);
   const auto normalFor = [&](const Color& color) {
-    return NormalMap(std::make_shared<Uniform>(color)).shadingNormalAt(surface);
+    return normalMapped(NormalMap(std::make_shared<Uniform>(color)), surface);
   };
   EXPECT_TRUE(shape_testing::nearlyEqual(normalFor(Color(0.5f, 0.5f, 1.0f)), Vec3(0, 1, 0)));
   EXPECT_TRUE(shape_testing::nearlyEqual(normalFor(Color(1.0f, 0.5f, 0.5f)), Vec3(1, 0, 0)));

@@ -13,25 +13,15 @@
 #include "comparison_report.hpp"
 #include "io/image_io.hpp"
 #include "io/scene_error.hpp"
-#include "output_check.hpp"
+#include "job.hpp"
+#include "look_inside.hpp"
 #include "progress_bar.hpp"
 #include "render/buffer_images.hpp"
-#include "render/render_limits.hpp"
 #include "settings_options.hpp"
 #include "stats_report.hpp"
 
 namespace rise::cli {
 namespace {
-
-template <typename Names>
-std::string joined(const Names& names) {
-  std::string text;
-  for (const auto& name : names) text += (text.empty() ? "" : ", ") + std::string(name);
-  return text;
-}
-
-constexpr int kExitOutputError = 1;
-constexpr int kExitBadInput = 2;
 
 struct RenderOptions {
   SettingsOptions settings;
@@ -49,61 +39,6 @@ struct CompareOptions {
   Encoding encoding = Encoding::Srgb;
 };
 
-// A scene and the settings to render it with, or the exit status of the
-// message already printed about them.
-struct Job {
-  Scene scene;
-  RenderSettings settings;
-};
-
-// Prepares the job for algorithms of these families, refusing it when a
-// render would exceed its limits (render/render_limits.hpp).
-std::variant<Job, int> prepare(const SettingsOptions& options, std::vector<Family> families) {
-  Job job;
-  try {
-    job.scene = loadScene(options.scenePath);
-    for (const std::string& warning : job.scene.warnings) std::cerr << warning << "\n";
-    job.settings = settingsFor(job.scene, options.request);
-    for (Family family : families) checkRenderFits(job.scene, job.settings, family);
-  } catch (const SceneError& error) {
-    std::cerr << error.what() << "\n";
-    return kExitBadInput;
-  } catch (const std::runtime_error& error) {  // SettingsError, RenderLimitError
-    std::cerr << "rise: " << error.what() << "\n";
-    return kExitBadInput;
-  }
-  return job;
-}
-
-// Says what is wrong with the files a command will write, before it renders.
-bool outputsAreWritable(const std::vector<PlannedOutput>& outputs, const std::string& scenePath,
-                        bool foldersAreMade = false) {
-  const std::string problem = outputsProblem(outputs, scenePath, foldersAreMade);
-  if (!problem.empty()) std::cerr << "rise: " << problem << "\n";
-  return problem.empty();
-}
-
-// The render, or nothing when it would exceed a limit of its work (said).
-std::optional<RenderResult> renderWithProgress(const Renderer& renderer, const Job& job) {
-  try {
-    ProgressBar progress(std::string(renderer.name()));
-    return renderTimed(renderer, job.scene, job.settings, progress);
-  } catch (const RenderLimitError& error) {  // the bar is erased by now
-    std::cerr << "rise: " << error.what() << "\n";
-    return std::nullopt;
-  }
-}
-
-RenderDescription describe(const Job& job, std::string_view algorithm) {
-  return {job.scene.source, std::string(algorithm), job.settings.width, job.settings.height,
-          job.settings.threads};
-}
-
-std::filesystem::path defaultOutput(const std::string& scenePath, const std::string& extension) {
-  if (scenePath == "-") return "render" + extension;
-  return std::filesystem::path(scenePath).filename().replace_extension(extension);
-}
-
 // out.png -> out.depth.png: the auxiliary buffers are written beside the image.
 std::filesystem::path bufferPath(const std::filesystem::path& output, const std::string& name) {
   std::filesystem::path path = output;
@@ -119,15 +54,6 @@ void writeBuffer(const RenderResult& result, const std::string& name,
     writeImage(raw, path, Encoding::Linear);
   else
     writeImage(visualizeBuffer(name, raw), path, Encoding::Linear);
-}
-
-// Says which of the options given the algorithm does not read.
-void noteUnreadOptions(const CLI::App& command, const AlgorithmDescription& algorithm) {
-  for (Option option : kAllOptions) {
-    const std::string flag = "--" + std::string(toString(option));
-    if (!algorithm.reads(option) && command.count(flag) > 0)
-      std::cerr << "rise: note: " << algorithm.name << " does not read " << flag << "\n";
-  }
 }
 
 int render(const RenderOptions& options, const CLI::App& command) {
@@ -249,12 +175,6 @@ void listAlgorithms() {
   }
 }
 
-std::vector<std::string> algorithmNames() {
-  std::vector<std::string> names;
-  for (const Renderer* renderer : allRenderers()) names.emplace_back(renderer->name());
-  return names;
-}
-
 // Every buffer some algorithm writes, in the order they are first met.
 std::vector<std::string> bufferNames() {
   std::vector<std::string> names;
@@ -330,6 +250,7 @@ int run(int argc, char** argv) {
 
   const CLI::App* algorithmsCommand =
       app.add_subcommand("algorithms", "List the algorithms, each with its citation");
+  const auto runLookInside = addLookInsideCommands(app);
 
   // CLI11 takes an unknown first word for a stray argument and asks for a
   // subcommand; say what was typed and what there is.
@@ -349,6 +270,7 @@ int run(int argc, char** argv) {
   if (*renderCommand) return render(renderOptions, *renderCommand);
   if (*compareCommand) return compare(compareOptions);
   if (*validateCommand) return validate(validatePath);
+  if (const std::optional<int> status = runLookInside()) return *status;
   if (*algorithmsCommand) listAlgorithms();
   return 0;
 }

@@ -6,10 +6,11 @@
 
 namespace rise::cli {
 
-ProgressBar::ProgressBar(std::string label)
+ProgressBar::ProgressBar(std::string label, StepRecorder* steps)
     : label_(std::move(label)),
       enabled_(isatty(STDERR_FILENO) != 0),
-      start_(std::chrono::steady_clock::now()) {}
+      start_(std::chrono::steady_clock::now()),
+      steps_(steps) {}
 
 ProgressBar::~ProgressBar() {
   if (enabled_ && lastPercent_ >= 0) std::fputs("\r\033[K", stderr);

@@ -1,15 +1,13 @@
 #!/usr/bin/env python3
-"""Writes the benchmark's mesh: a bumpy sphere of exactly 1,000,000 triangles
-(1000 segments around, 501 bands from pole to pole), with a normal at every
-vertex, as a binary little-endian PLY that RISE (through Assimp) and the
-OSMesa program both read. Neighbouring triangles share their vertices, and the
-surface is closed, so both renderers may cull its back faces."""
+"""Writes the benchmarks' mesh: a bumpy sphere of 2 * SEGMENTS * (RINGS - 1)
+triangles (by default exactly 1,000,000: 1000 segments around, 501 bands from
+pole to pole), with a normal at every vertex unless --no-normals, as a binary
+little-endian PLY that RISE (through Assimp), the OSMesa and the Embree
+programs read. Neighbouring triangles share their vertices, and the surface is
+closed, so the renderers may cull its back faces."""
+import argparse
 import math
 import struct
-import sys
-
-SEGMENTS = 1000
-RINGS = 501
 
 
 def point(theta, phi):
@@ -35,43 +33,55 @@ def normal(theta, phi):
     return tuple(sign * x / length for x in n)
 
 
-def main(path):
-    vertices = [((0.0, 1.0, 0.0), (0.0, 1.0, 0.0))]
-    for ring in range(1, RINGS):
-        phi = math.pi * ring / RINGS
-        for segment in range(SEGMENTS):
-            theta = 2.0 * math.pi * segment / SEGMENTS
-            vertices.append((point(theta, phi), normal(theta, phi)))
-    vertices.append(((0.0, -1.0, 0.0), (0.0, -1.0, 0.0)))
+def main(path, segments, rings, with_normals):
+    def pole(y):
+        return ((0.0, y, 0.0), (0.0, y, 0.0) if with_normals else ())
+
+    vertices = [pole(1.0)]
+    for ring in range(1, rings):
+        phi = math.pi * ring / rings
+        for segment in range(segments):
+            theta = 2.0 * math.pi * segment / segments
+            vertices.append((point(theta, phi), normal(theta, phi) if with_normals else ()))
+    vertices.append(pole(-1.0))
     south = len(vertices) - 1
 
-    def at(ring, segment):  # rings 1 .. RINGS - 1
-        return 1 + (ring - 1) * SEGMENTS + segment % SEGMENTS
+    def at(ring, segment):  # rings 1 .. rings - 1
+        return 1 + (ring - 1) * segments + segment % segments
 
     # With theta turning from +x towards +z, (lower k, lower k+1, upper k+1)
     # turns clockwise seen from outside: the corners are listed the other way.
     triangles = []
-    for k in range(SEGMENTS):
+    for k in range(segments):
         triangles.append((0, at(1, k + 1), at(1, k)))
-        triangles.append((south, at(RINGS - 1, k), at(RINGS - 1, k + 1)))
-    for ring in range(1, RINGS - 1):
-        for k in range(SEGMENTS):
+        triangles.append((south, at(rings - 1, k), at(rings - 1, k + 1)))
+    for ring in range(1, rings - 1):
+        for k in range(segments):
             upper, upper_next = at(ring, k), at(ring, k + 1)
             lower, lower_next = at(ring + 1, k), at(ring + 1, k + 1)
             triangles.append((lower, upper, upper_next))
             triangles.append((lower, upper_next, lower_next))
 
+    normal_properties = "property float nx\nproperty float ny\nproperty float nz\n"
     with open(path, "wb") as out:
         out.write(("ply\nformat binary_little_endian 1.0\n"
                    f"element vertex {len(vertices)}\n"
                    "property float x\nproperty float y\nproperty float z\n"
-                   "property float nx\nproperty float ny\nproperty float nz\n"
+                   f"{normal_properties if with_normals else ''}"
                    f"element face {len(triangles)}\n"
                    "property list uchar int vertex_indices\nend_header\n").encode())
-        out.write(b"".join(struct.pack("<6f", *p, *n) for p, n in vertices))
+        floats = 6 if with_normals else 3
+        out.write(b"".join(struct.pack(f"<{floats}f", *p, *n) for p, n in vertices))
         out.write(b"".join(struct.pack("<B3i", 3, *t) for t in triangles))
     print(f"{path}: {len(vertices)} vertices, {len(triangles)} triangles")
 
 
 if __name__ == "__main__":
-    main(sys.argv[1])
+    arguments = argparse.ArgumentParser(description=__doc__)
+    arguments.add_argument("path")
+    arguments.add_argument("--segments", type=int, default=1000, help="around the axis")
+    arguments.add_argument("--rings", type=int, default=501, help="bands from pole to pole")
+    arguments.add_argument("--no-normals", action="store_true",
+                           help="leave the normals to the reader")
+    options = arguments.parse_args()
+    main(options.path, options.segments, options.rings, not options.no_normals)

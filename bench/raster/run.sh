@@ -47,14 +47,6 @@ enter_repository
   die "no $build/bench/rise_raster_bench (built with the benchmarks: scripts/install-deps --bench)"
 mkdir -p "$out"
 
-stat() {
-  python3 -c 'import json, sys; print("%.3f" % json.load(open(sys.argv[1]))[sys.argv[2]])' \
-    "$1" "$2" 2>/dev/null || die "no $2 in $1"
-}
-
-# The smallest of the numbers on standard input.
-smallest() { sort -g | head -n 1; }
-
 # Renders a scene with `rise render` $frames times; prints the best render_seconds.
 best_render() {
   local scene="$1" name="$2" run
@@ -62,16 +54,12 @@ best_render() {
   for ((run = 1; run <= frames; ++run)); do
     "$build/rise" render "$scene" -o "$out/$name.png" --threads "$threads" \
       --stats "$out/$name.json" "$@" >"$out/$name.log" 2>&1 || die "RISE failed; see $out/$name.log"
-    stat "$out/$name.json" render_seconds
+    json_seconds "$out/$name.json" render_seconds
   done | smallest
 }
 
 # The value a benchmark program prints on its line "name value".
 value() { sed -n "s/^$1 //p"; }
-
-ratio() {
-  awk -v a="$1" -v b="$2" 'BEGIN { if (b != "-" && b > 0) printf "%.2f", a / b; else print "-" }'
-}
 
 echo "The report's model scene (examples/md2.yaml), 640x480, Gouraud, $threads threads, best of $frames:"
 printf '| %-16s | %-9s | %-14s |\n' "algorithm" "RISE (s)" "the report (s)"

@@ -64,8 +64,7 @@ time_rise() {
     >"$log" 2>&1; then
     die "RISE failed; see $log"
   fi
-  python3 -c 'import json, sys; print("%.3f" % json.load(open(sys.argv[1]))["render_seconds"])' "$stats" \
-    2>/dev/null || die "no render_seconds in $stats"
+  json_seconds "$stats" render_seconds
 }
 
 # Prints the trace seconds of one POV-Ray run: the number in parentheses on the
@@ -88,7 +87,7 @@ best_of_runs() {
     times+=("$("$1")")
     echo "  $2 run $run: ${times[-1]} s" >&2
   done
-  printf '%s\n' "${times[@]}" | sort -g | head -n 1
+  printf '%s\n' "${times[@]}" | smallest
 }
 
 rise_seconds="-"
@@ -107,8 +106,7 @@ if [[ "$only" != rise ]]; then
   images+=("$out/povray$suffix.png")
 fi
 if [[ -z "$only" ]]; then
-  ratio="$(awk -v pov="$povray_seconds" -v rise="$rise_seconds" \
-    'BEGIN { if (rise > 0) printf "%.2f", pov / rise; else print "-" }')"
+  ratio="$(ratio "$povray_seconds" "$rise_seconds")"
 fi
 
 echo

@@ -1,6 +1,7 @@
 #include "algorithms/registry.hpp"
 
 #include <chrono>
+#include <tuple>
 
 #include "raster/area_subdivision.hpp"
 #include "raster/depth_sort.hpp"
@@ -11,17 +12,29 @@
 
 namespace rise {
 
-std::span<const Renderer* const> allRenderers() {
-  static const DepthSortRenderer depthSort;
-  static const AreaSubdivisionRenderer areaSubdivision;
-  static const ZBufferRenderer zBuffer;
-  static const ScanlineRenderer scanline;
-  static const WhittedRayTracer rayTracing;
-  static const DistributedRayTracer distributedRayTracing;
-  static const Renderer* const table[] = {
-      &depthSort, &areaSubdivision, &zBuffer, &scanline, &rayTracing, &distributedRayTracing,
-  };
+namespace {
+
+// One instance of each algorithm, made once, in the order given.
+template <typename... Algorithm>
+std::span<const Renderer* const> tableOf() {
+  static const std::tuple<Algorithm...> algorithms;
+  static const Renderer* const table[] = {&std::get<Algorithm>(algorithms)...};
   return table;
+}
+
+}  // namespace
+
+std::span<const Renderer* const> allRenderers() {
+  // One line an algorithm.
+  // clang-format off
+  return tableOf<
+      DepthSortRenderer,
+      AreaSubdivisionRenderer,
+      ZBufferRenderer,
+      ScanlineRenderer,
+      WhittedRayTracer,
+      DistributedRayTracer>();
+  // clang-format on
 }
 
 const Renderer* findRenderer(std::string_view name) {

@@ -7,8 +7,8 @@
 #include <ImfHeader.h>
 #include <ImfIO.h>
 #include <ImfOutputFile.h>
+#include <spng.h>
 #include <stb_image.h>
-#include <stb_image_write.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "io/atomic_file.hpp"
+#include "io/byte_encoding.hpp"
 #include "io/file_limits.hpp"
 #include "io/pcx_file.hpp"
 
@@ -63,13 +64,6 @@ ImageFormat formatOf(const std::filesystem::path& path) {
   throw fileError(path, "unsupported image format '" + extension + "' (use .png, .ppm or .exr)");
 }
 
-std::uint8_t byteFromLinear(float linear, Encoding encoding) {
-  // The zero comes first so that a NaN colour becomes black.
-  float value = std::min(std::max(0.0f, linear), 1.0f);
-  if (encoding == Encoding::Srgb) value = srgbFromLinear(value);
-  return static_cast<std::uint8_t>(std::lround(value * 255.0f));
-}
-
 float linearFromByte(std::uint8_t byte, Encoding encoding) {
   const float value = static_cast<float>(byte) / 255.0f;
   return encoding == Encoding::Srgb ? linearFromSrgb(value) : value;
@@ -77,23 +71,45 @@ float linearFromByte(std::uint8_t byte, Encoding encoding) {
 
 // Interleaved 8-bit RGB, top row first: the layout of both PNG and PPM.
 std::vector<std::uint8_t> rgbBytes(const Image& image, Encoding encoding) {
-  std::vector<std::uint8_t> bytes;
-  bytes.reserve(image.pixels().size() * 3);
-  for (const Color& pixel : image.pixels())
+  const ByteEncoder& toByte = byteEncoder(encoding);
+  const std::vector<Color>& pixels = image.pixels();
+  std::vector<std::uint8_t> bytes(pixels.size() * 3);
+  for (std::size_t i = 0; i < pixels.size(); ++i)
     for (int channel = 0; channel < 3; ++channel)
-      bytes.push_back(byteFromLinear(pixel[channel], encoding));
+      bytes[3 * i + channel] = toByte(pixels[i][channel]);
   return bytes;
 }
+
+// zlib's fastest level, every row given as its difference from the row above
+// (PNG's "up" filter): a rendered image comes out within a few percent of the
+// size that trying every filter on every row gives, in a quarter of the time.
+constexpr int kPngCompressionLevel = 1;
+constexpr int kPngFilters = SPNG_FILTER_CHOICE_UP;
 
 void writePng(const Image& image, Encoding encoding, const std::filesystem::path& path,
               AtomicFile& file) {
   const std::vector<std::uint8_t> bytes = rgbBytes(image, encoding);
-  auto append = [](void* context, void* data, int size) {
-    static_cast<AtomicFile*>(context)->write(data, static_cast<std::size_t>(size));
+  const std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> png(spng_ctx_new(SPNG_CTX_ENCODER),
+                                                           spng_ctx_free);
+  if (!png) throw fileError(path, "cannot encode PNG (out of memory)");
+  spng_rw_fn* append = [](spng_ctx*, void* user, void* data, std::size_t size) {
+    static_cast<AtomicFile*>(user)->write(data, size);
+    return 0;
   };
-  if (stbi_write_png_to_func(append, &file, image.width(), image.height(), 3, bytes.data(),
-                             image.width() * 3) == 0)
-    throw fileError(path, "cannot encode PNG");
+  spng_ihdr header{};
+  header.width = static_cast<std::uint32_t>(image.width());
+  header.height = static_cast<std::uint32_t>(image.height());
+  header.bit_depth = 8;
+  header.color_type = SPNG_COLOR_TYPE_TRUECOLOR;
+  int error = spng_set_png_stream(png.get(), append, &file);
+  if (error == 0) error = spng_set_ihdr(png.get(), &header);
+  if (error == 0)
+    error = spng_set_option(png.get(), SPNG_IMG_COMPRESSION_LEVEL, kPngCompressionLevel);
+  if (error == 0) error = spng_set_option(png.get(), SPNG_FILTER_CHOICE, kPngFilters);
+  if (error == 0)
+    error = spng_encode_image(png.get(), bytes.data(), bytes.size(), SPNG_FMT_PNG,
+                              SPNG_ENCODE_FINALIZE);
+  if (error != 0) throw fileError(path, because("cannot encode PNG", spng_strerror(error)));
 }
 
 void writePpm(const Image& image, Encoding encoding, AtomicFile& file) {

@@ -150,6 +150,10 @@ Mat4 toMat4(const aiMatrix4x4& m) {
 // unusable, or computed when the file has none.
 MeshGeometry geometryOf(const aiMesh& mesh) {
   MeshGeometry geometry;
+  geometry.positions.reserve(mesh.mNumVertices);
+  if (mesh.HasNormals()) geometry.normals.reserve(mesh.mNumVertices);
+  if (mesh.HasTextureCoords(0)) geometry.uvs.reserve(mesh.mNumVertices);
+  geometry.triangles.reserve(mesh.mNumFaces);
   for (unsigned int i = 0; i < mesh.mNumVertices; ++i) {
     geometry.positions.push_back(toVec3(mesh.mVertices[i]));
     if (mesh.HasNormals()) {

@@ -256,8 +256,10 @@ Scene readScene(const YamlNode& root, std::string source) {
   if (const std::optional<Field> materials = map.optional("materials"))
     scene.materials = readMaterials(*materials, files);
   for (const Field& item :
-       readList(map.required("objects"), "a list of objects", "an item of 'objects'"))
+       readList(map.required("objects"), "a list of objects", "an item of 'objects'")) {
     scene.shapes.push_back(readObject(item, scene.materials, files));
+    scene.shapeNames.push_back(describeObject(item));
+  }
   for (const SceneFiles::Warning& warning : files.warnings())
     scene.warnings.push_back(scene.source + ":" + std::to_string(warning.mark.line + 1) + ":" +
                              std::to_string(warning.mark.column + 1) +

@@ -204,4 +204,9 @@ std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& mate
   return std::make_unique<TransformedShape>(std::move(shape), toWorld);
 }
 
+std::string describeObject(const Field& item) {
+  return readMap(item, "an object", item.name).front().key + " at line " +
+         std::to_string(item.mark.line + 1);
+}
+
 }  // namespace rise

@@ -25,4 +25,8 @@ namespace rise {
 std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& materials,
                                   SceneFiles& files);
 
+// The object as a student finds it in the file: its kind and line, "sphere
+// at line 16". For an item that readObject has read.
+std::string describeObject(const Field& item);
+
 }  // namespace rise

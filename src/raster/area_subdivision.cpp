@@ -79,11 +79,43 @@ struct SubdivisionCounters {
 };
 
 // A window waiting to be examined, with the polygons not disjoint from its
-// parent: the only ones that can reach into it.
+// parent: the only ones that can reach into it. Its place in the quadtree,
+// `path`, numbers the windows in the order a single examiner going depth
+// first would take them: a window before its quadrants, quadrants in order.
 struct Window {
   PixelRect area;
   std::vector<int> candidates;
+  std::int64_t path = 0;
+  int level = 0;
 };
+
+// Quadrant q of the window at `path`, `level`: one base-5 digit a level,
+// 1 to 4, most significant first, so that numbers sort depth first.
+constexpr int kDeepestLevel = 26;
+std::int64_t quadrantPath(std::int64_t path, int level, int q) {
+  std::int64_t unit = 1;
+  for (int below = level + 1; below < kDeepestLevel; ++below) unit *= 5;
+  return path + (q + 1) * unit;
+}
+
+// How Warnock settled a window, or that it could not.
+enum class Verdict { Empty, OnePolygon, SurrounderInFront, Pixel, Quartered };
+
+const char* describe(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Empty:
+      return "every polygon is disjoint from it: background";
+    case Verdict::OnePolygon:
+      return "one polygon alone reaches into it: drawn over the background";
+    case Verdict::SurrounderInFront:
+      return "a surrounding polygon is in front of all the others: it fills the window";
+    case Verdict::Pixel:
+      return "a single pixel: the nearest polygon at its centre is drawn";
+    case Verdict::Quartered:
+      return "not simple: quartered";
+  }
+  return "?";
+}
 
 Vec2 pixelCentre(int x, int y) {
   return {static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f};
@@ -118,10 +150,13 @@ class Subdivision {
     const Vec2 low(static_cast<float>(window.x0), static_cast<float>(window.y0));
     const Vec2 high(static_cast<float>(window.x1), static_cast<float>(window.y1));
     std::vector<int> present;
+    StepRecorder* const steps = frame_.steps();
+    std::vector<Relation> relations;  // kept for the step alone
     int frontSurrounder = -1;
     for (int polygon : candidates) {
       const Relation relation = classify(polygon, low, high);
       ++counters.relations[relation];
+      if (steps) relations.push_back(relation);
       if (relation == kDisjoint) continue;
       present.push_back(polygon);
       if (relation == kSurrounding &&
@@ -131,24 +166,32 @@ class Subdivision {
     }
     chargeToPixels(window, static_cast<float>(candidates.size()));
 
+    Verdict verdict = Verdict::Quartered;
     if (present.empty()) {
+      verdict = Verdict::Empty;
       ++counters.emptyWindows;
     } else if (present.size() == 1) {
+      verdict = Verdict::OnePolygon;
       ++counters.singlePolygonWindows;
       coverages_[present[0]].forEachPixel(window,
                                           [&](int x, int y) { draw(x, y, present[0], counters); });
     } else if (frontSurrounder >= 0 && isInFrontOfAll(frontSurrounder, present, low, high)) {
+      verdict = Verdict::SurrounderInFront;
       ++counters.surrounderInFrontWindows;
       for (int y = window.y0; y < window.y1; ++y)
         for (int x = window.x0; x < window.x1; ++x) draw(x, y, frontSurrounder, counters);
     } else if (window.x1 - window.x0 == 1 && window.y1 - window.y0 == 1) {
+      verdict = Verdict::Pixel;
       ++counters.pixelWindows;
       resolvePixel(window.x0, window.y0, present, counters);
     } else {
       ++counters.subdivisions;
+      int q = 0;
       for (const PixelRect& quadrant : quadrantsOf(window))
-        quadrants.push_back({quadrant, present});
+        quadrants.push_back({quadrant, present, quadrantPath(examined.path, examined.level, q++),
+                             examined.level + 1});
     }
+    if (steps) steps->record(windowStep(examined, relations, verdict), examined.path);
   }
 
  private:
@@ -224,6 +267,37 @@ class Subdivision {
         work / static_cast<float>((window.x1 - window.x0) * (window.y1 - window.y0));
     for (int y = window.y0; y < window.y1; ++y)
       for (int x = window.x0; x < window.x1; ++x) frame_.addCost(x, y, share);
+  }
+
+  // The window as a student follows it: its polygons classified, and how
+  // it was settled or why it was quartered.
+  static Step windowStep(const Window& window, const std::vector<Relation>& relations,
+                         Verdict verdict) {
+    const PixelRect& area = window.area;
+    Step step;
+    step.kind = "window";
+    int counts[kRelationCount] = {};
+    StepTable classified{"polygons classified", {"polygon", "relation"}, {}};
+    for (std::size_t i = 0; i < relations.size(); ++i) {
+      ++counts[relations[i]];
+      if (relations[i] != kDisjoint)
+        classified.rows.push_back(
+            {static_cast<double>(window.candidates[i]), kRelationNames[relations[i]]});
+    }
+    step.text = "window " + std::to_string(area.x0) + "," + std::to_string(area.y0) + " " +
+                std::to_string(area.width()) + "x" + std::to_string(area.height()) + ": " +
+                std::to_string(counts[kSurrounding]) + " surrounding, " +
+                std::to_string(counts[kIntersecting]) + " intersecting, " +
+                std::to_string(counts[kContained]) + " contained, " +
+                std::to_string(counts[kDisjoint]) + " disjoint; " + describe(verdict);
+    step.values = {{"level", window.level}};
+    step.tables.push_back(std::move(classified));
+    step.shapes.push_back({StepShape::Kind::Rectangle,
+                           "window",
+                           {Vec2(static_cast<float>(area.x0), static_cast<float>(area.y0)),
+                            Vec2(static_cast<float>(area.x1), static_cast<float>(area.y1))}});
+    if (verdict != Verdict::Quartered) step.settled.push_back(area);
+    return step;
   }
 
   static std::vector<PixelRect> quadrantsOf(const PixelRect& window) {

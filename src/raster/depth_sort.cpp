@@ -38,6 +38,8 @@
 #include "raster/bands.hpp"
 #include "raster/polygon_clipping.hpp"
 #include "raster/polygon_coverage.hpp"
+#include "raster/polygon_relations.hpp"
+#include "raster/waiting_list.hpp"
 #include "render/render_limits.hpp"
 
 namespace rise {
@@ -58,13 +60,12 @@ namespace {
 enum Test { kDepth, kXExtent, kYExtent, kBehindPlane, kInFrontOfPlane, kProjection, kTestCount };
 constexpr std::array<const char*, kTestCount> kTestNames = {
     "depth", "x_extent", "y_extent", "behind_plane", "front_of_plane", "projection"};
-
-// Corners this close to a plane, relative to the polygon's nearest inverse
-// depth, are on it: the corners two faces share lie on both faces' planes,
-// up to rounding.
-constexpr float kPlaneTolerance = 1e-5f;
-// Images overlapping by less than this, in pixels, only touch.
-constexpr float kOverlapTolerance = 1e-4f;
+constexpr std::array<const char*, kTestCount> kTestWords = {"the depth extents",
+                                                            "the x extents",
+                                                            "the y extents",
+                                                            "P lies behind Q's plane",
+                                                            "Q lies in front of P's plane",
+                                                            "the projections"};
 
 struct DepthSortCounters {
   std::array<std::uint64_t, kTestCount> settledBy{};
@@ -74,127 +75,10 @@ struct DepthSortCounters {
   std::uint64_t unresolved = 0;  // overlaps no split could undo, painted as sorted
 };
 
-// A polygon's screen extent and depth range (inverse depths: `farthest` is
-// the smallest w).
-struct Extent {
-  Vec2 low, high;
-  float farthest, nearest;
-};
-
-Extent extentOf(std::span<const Vec3> corners) {
-  Extent extent{Vec2(kInfinity), Vec2(-kInfinity), kInfinity, -kInfinity};
-  for (const Vec3& corner : corners) {
-    extent.low = glm::min(extent.low, Vec2(corner));
-    extent.high = glm::max(extent.high, Vec2(corner));
-    extent.farthest = std::min(extent.farthest, corner.z);
-    extent.nearest = std::max(extent.nearest, corner.z);
-  }
-  return extent;
-}
-
-// Where the corners lie from a plane in screen space: wholly behind it (none
-// in front), wholly in front (none behind), or both ways.
-struct PlaneSides {
-  bool someInFront = false;
-  bool someBehind = false;
-};
-
-// `tolerance` is the polygon's own: the one its split uses too, so that a
-// piece of a split never lies on both sides of the plane that cut it.
-PlaneSides planeSides(std::span<const Vec3> corners, const glm::vec4& plane, float tolerance) {
-  PlaneSides sides;
-  for (const Vec3& corner : corners) {
-    const float distance = signedDistance(plane, corner);
-    sides.someInFront |= distance > tolerance;
-    sides.someBehind |= distance < -tolerance;
-  }
-  return sides;
-}
-
-// Whether an edge of `a`, as a separating axis, keeps the two convex images
-// apart.
-bool separatedByAnEdgeOf(std::span<const Vec3> a, std::span<const Vec3> b) {
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    const Vec2 edge = Vec2(a[(i + 1) % a.size()]) - Vec2(a[i]);
-    const float length = glm::length(edge);
-    if (length == 0.0f) continue;
-    const Vec2 axis = Vec2(-edge.y, edge.x) / length;
-    float lowA = kInfinity, highA = -kInfinity, lowB = kInfinity, highB = -kInfinity;
-    for (const Vec3& corner : a) {
-      lowA = std::min(lowA, glm::dot(axis, Vec2(corner)));
-      highA = std::max(highA, glm::dot(axis, Vec2(corner)));
-    }
-    for (const Vec3& corner : b) {
-      lowB = std::min(lowB, glm::dot(axis, Vec2(corner)));
-      highB = std::max(highB, glm::dot(axis, Vec2(corner)));
-    }
-    if (highA <= lowB + kOverlapTolerance || highB <= lowA + kOverlapTolerance) return true;
-  }
-  return false;
-}
-
-bool imagesOverlap(std::span<const Vec3> a, std::span<const Vec3> b) {
-  return !separatedByAnEdgeOf(a, b) && !separatedByAnEdgeOf(b, a);
-}
-
-// The polygons waiting to be painted, the next at the front. Behind the
-// polygons moved to the front or cut there, the rest stays sorted by farthest
-// depth, so that the search for polygons the front one may hide can stop at
-// the first of them that lies wholly nearer.
-class WaitingList {
- public:
-  WaitingList(std::vector<int> sorted, const std::vector<Extent>& extents)
-      : list_(std::move(sorted)), extents_(extents) {}
-
-  bool isEmpty() const { return head_ == list_.size(); }
-  int front() const { return list_[head_]; }
-  // Positions run from the front, 0, to size() - 1.
-  std::size_t size() const { return list_.size() - head_; }
-  int at(std::size_t position) const { return list_[head_ + position]; }
-  bool isSortedAt(std::size_t position) const { return head_ + position >= sortedFrom_; }
-  std::size_t find(int piece) const {
-    return static_cast<std::size_t>(std::find(list_.begin() + head_, list_.end(), piece) -
-                                    list_.begin()) -
-           head_;
-  }
-
-  void popFront() { sortedFrom_ = std::max(sortedFrom_, ++head_); }
-
-  void moveToFront(std::size_t position) {
-    const auto moved = list_.begin() + static_cast<std::ptrdiff_t>(head_ + position);
-    if (isSortedAt(position)) ++sortedFrom_;
-    std::rotate(list_.begin() + static_cast<std::ptrdiff_t>(head_), moved, moved + 1);
-  }
-
-  // Puts two pieces in place of the polygon at `position`: at the front, both
-  // at the front; in the sorted part, each where its depth sorts it.
-  void replace(std::size_t position, int first, int second) {
-    const std::size_t index = head_ + position;
-    if (position == 0 || !isSortedAt(position)) {
-      list_[index] = first;
-      list_.insert(list_.begin() + static_cast<std::ptrdiff_t>(index) + 1, second);
-      sortedFrom_ = std::max(sortedFrom_ + 1, index + 2);
-      return;
-    }
-    list_.erase(list_.begin() + static_cast<std::ptrdiff_t>(index));
-    for (int piece : {first, second}) {
-      const auto place = std::upper_bound(
-          list_.begin() + static_cast<std::ptrdiff_t>(sortedFrom_), list_.end(), piece,
-          [&](int a, int b) { return extents_[a].farthest < extents_[b].farthest; });
-      list_.insert(place, piece);
-    }
-  }
-
- private:
-  std::vector<int> list_;
-  const std::vector<Extent>& extents_;
-  std::size_t head_ = 0;
-  std::size_t sortedFrom_ = 0;
-};
-
 class DepthSorter {
  public:
-  explicit DepthSorter(const ScreenGeometry& screen) : screen_(screen) {
+  DepthSorter(const ScreenGeometry& screen, const RasterFrame& frame)
+      : screen_(screen), frame_(frame), steps_(frame.steps()) {
     pieces_.corners = screen.corners;
     pieces_.polygons = screen.polygons;
     for (const ScreenPolygon& polygon : pieces_.polygons) {
@@ -210,6 +94,7 @@ class DepthSorter {
     std::iota(sorted.begin(), sorted.end(), 0);
     std::stable_sort(sorted.begin(), sorted.end(),
                      [&](int a, int b) { return extents_[a].farthest < extents_[b].farthest; });
+    if (steps_) recordInitialOrder(sorted);
     WaitingList waiting(std::move(sorted), extents_);
     std::vector<int> order;
     while (!waiting.isEmpty()) {
@@ -225,6 +110,8 @@ class DepthSorter {
 
   const ScreenGeometry& pieces() const { return pieces_; }
   const DepthSortCounters& counters() const { return counters_; }
+  // The steps recorded so far, which the painting's follow.
+  std::int64_t stepsRecorded() const { return stepsRecorded_; }
 
  private:
   // Checks the front polygon against the polygons after it. Returns true
@@ -240,6 +127,10 @@ class DepthSorter {
       if (!marked_[q] && cannotHideByDepthOrPlanes(q, p)) {
         // Q must be painted before P.
         ++counters_.moves;
+        if (steps_)
+          record(pairStep("move", p, q,
+                          "Q cannot be hidden by P (tests 1, 4 or 5 with the roles swapped): Q is "
+                          "moved before P and marked"));
         mark(q);
         waiting.moveToFront(k);
         return false;
@@ -273,14 +164,17 @@ class DepthSorter {
                              " comparisons of pairs of polygons to order this scene's " +
                              std::to_string(screen_.polygons.size()) +
                              " polygons; expected a scene it can order within that: render it with "
-                             "z-buffer or scanline, or "
-                             "with fewer polygons (--tessellation)");
-    for (int test = 0; test < kTestCount; ++test) {
-      if (!passes(static_cast<Test>(test), p, q)) continue;
-      ++counters_.settledBy[test];
-      return true;
-    }
-    return false;
+                             "z-buffer or scanline, or with fewer polygons (--tessellation)");
+    int settledBy = kTestCount;
+    for (int test = 0; test < kTestCount && settledBy == kTestCount; ++test)
+      if (passes(static_cast<Test>(test), p, q)) settledBy = test;
+    if (settledBy < kTestCount) ++counters_.settledBy[settledBy];
+    if (steps_)
+      record(pairStep("compare", p, q,
+                      settledBy < kTestCount
+                          ? std::string("settled by ") + kTestWords[settledBy] + ": P cannot hide Q"
+                          : "no test settles it: P may hide Q"));
+    return settledBy < kTestCount;
   }
 
   // Whether the test shows that p cannot hide q.
@@ -342,8 +236,49 @@ class DepthSorter {
                              " polygons; expected a scene it can order within that: render it "
                              "with z-buffer or scanline");
     const int behind = addPiece(piece, behind_);
-    waiting.replace(position, behind, addPiece(piece, front_));
+    const int front = addPiece(piece, front_);
+    if (steps_) record(splitStep(piece, other, behind, front));
+    waiting.replace(position, behind, front);
     return true;
+  }
+
+  // The steps as a student follows them: numbers name pieces, the polygons
+  // and the parts that splits make of them.
+  void record(Step step) {
+    if (!step.kind.empty()) steps_->record(std::move(step), stepsRecorded_++);
+  }
+
+  void recordInitialOrder(const std::vector<int>& sorted) {
+    Step step{"sort", "the polygons sorted by their farthest depth, farthest first"};
+    step.tables.push_back({"initial order", {"polygon", "face", "farthest depth"}, {}});
+    for (int piece : sorted)
+      step.tables.back().rows.push_back({static_cast<double>(piece),
+                                         static_cast<double>(frame_.sceneFaceOf(faceOf(piece))),
+                                         1.0 / extents_[piece].farthest});
+    record(std::move(step));
+  }
+
+  // A step about P and Q, or none when the recorder does not want it.
+  Step pairStep(const char* kind, int p, int q, const std::string& verdict) {
+    const Extent& a = extents_[p];
+    const Extent& b = extents_[q];
+    const PixelRect bounds = pixelBoundsOf(
+        std::array{Vec3(glm::min(a.low, b.low), 0.0f), Vec3(glm::max(a.high, b.high), 0.0f)});
+    if (!steps_->wantsDetail(bounds)) return {};
+    Step step{kind, "P " + std::to_string(p) + " and Q " + std::to_string(q) + ": " + verdict};
+    step.values = {{"P", p}, {"Q", q}};
+    step.shapes = {outlineOf(cornersOf(p), "polygon"), outlineOf(cornersOf(q), "other")};
+    return step;
+  }
+
+  Step splitStep(int piece, int other, int behind, int front) {
+    Step step = pairStep("split", piece, other,
+                         "P straddles Q's plane: split into " + std::to_string(behind) +
+                             " (behind) and " + std::to_string(front) + " (in front)");
+    if (step.kind.empty()) return step;
+    step.shapes = {outlineOf(cornersOf(behind), "behind"), outlineOf(cornersOf(front), "front"),
+                   outlineOf(cornersOf(other), "other")};
+    return step;
   }
 
   int addPiece(int parent, std::span<const Vec3> corners) {
@@ -358,9 +293,13 @@ class DepthSorter {
   std::span<const Vec3> cornersOf(int piece) const {
     return pieces_.cornersOf(pieces_.polygons[piece]);
   }
+  int faceOf(int piece) const { return pieces_.polygons[piece].face; }
   glm::vec4 planeOf(int piece) const { return screen_.faces[pieces_.polygons[piece].face].plane(); }
 
   const ScreenGeometry& screen_;
+  const RasterFrame& frame_;
+  StepRecorder* steps_;
+  std::int64_t stepsRecorded_ = 0;
   ScreenGeometry pieces_;  // the polygons, then the pieces that splits make
   std::vector<Extent> extents_;
   std::vector<float> tolerances_;  // how near a plane a piece's corners count as on it
@@ -370,21 +309,39 @@ class DepthSorter {
   DepthSortCounters counters_;
 };
 
+// Painting a piece, in the band's part.
+Step paintStep(const ScreenGeometry& pieces, int piece, const RasterFrame& frame) {
+  const std::span<const Vec3> corners = pieces.cornersOf(pieces.polygons[piece]);
+  if (!frame.steps()->wantsDetail(pixelBoundsOf(corners))) return {"paint"};
+  Step step{"paint", "paint piece " + std::to_string(piece) + " (face " +
+                         std::to_string(frame.sceneFaceOf(pieces.polygons[piece].face)) +
+                         ") over what is there"};
+  step.shapes.push_back(outlineOf(corners, "polygon"));
+  return step;
+}
+
+// Paints the band's pieces in order; `stepOf` numbers each piece's step.
 void paintBand(const ScreenGeometry& pieces, const PixelRect& band, std::span<const int> order,
-               RasterFrame& frame, std::uint64_t& pixelsWritten) {
+               std::span<const std::int64_t> stepOf, RasterFrame& frame,
+               std::uint64_t& pixelsWritten) {
   std::vector<int> faces(static_cast<std::size_t>(band.width()) * band.height(), -1);
   const auto at = [&](int x, int y) -> int& {
     return faces[static_cast<std::size_t>(y - band.y0) * band.width() + x - band.x0];
   };
+  StepRecorder* const steps = frame.steps();
   PolygonCoverage coverage;
   for (int piece : order) {
     const ScreenPolygon& polygon = pieces.polygons[piece];
+    Step step;
+    if (steps) step = paintStep(pieces, piece, frame);
     coverage.reset(pieces.cornersOf(polygon));
     coverage.forEachPixel(band, [&](int x, int y) {
       at(x, y) = polygon.face;
       frame.addCost(x, y, 1.0f);
+      if (steps) step.writes.push_back(frame.writeOf(x, y, polygon.face, 0.0f));
       ++pixelsWritten;
     });
+    if (steps) steps->record(std::move(step), stepOf[piece], band.y0);
   }
   for (int y = band.y0; y < band.y1; ++y)
     for (int x = band.x0; x < band.x1; ++x)
@@ -395,12 +352,15 @@ void paintBand(const ScreenGeometry& pieces, const PixelRect& band, std::span<co
 
 void DepthSortRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
                                           RasterFrame& frame, Stats& stats) const {
-  DepthSorter sorter(screen);
+  DepthSorter sorter(screen, frame);
   const std::vector<int> order = sorter.paintingOrder();
+  std::vector<std::int64_t> stepOf(sorter.pieces().polygons.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+    stepOf[order[i]] = sorter.stepsRecorded() + static_cast<std::int64_t>(i);
   const std::uint64_t pixelsWritten = drawInBands<std::uint64_t>(
       workers, sorter.pieces(), order, frame.width(), frame.height(),
       [&](const PixelRect& band, std::span<const int> pieces, std::uint64_t& bandPixels) {
-        paintBand(sorter.pieces(), band, pieces, frame, bandPixels);
+        paintBand(sorter.pieces(), band, pieces, stepOf, frame, bandPixels);
       });
 
   const DepthSortCounters& counters = sorter.counters();

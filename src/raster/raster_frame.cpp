@@ -6,8 +6,8 @@ namespace rise {
 
 RasterFrame::RasterFrame(int width, int height, const Color& background,
                          const ScreenGeometry& screen, const SurfaceShader& shader,
-                         const Workers& workers)
-    : screen_(screen), shader_(shader) {
+                         const Workers& workers, StepRecorder* steps)
+    : screen_(screen), shader_(shader), steps_(steps) {
   // Filling five image-sized buffers is a fair share of a frame of a large
   // image: the render's workers share it.
   const std::array<Color, 5> fills = {background, Color(kInfinity), Color(0.0f), Color(-1.0f),
@@ -30,6 +30,18 @@ void RasterFrame::setVisible(int x, int y, int face) {
   depth_->at(x, y) = Color(pixel.depth);
   normal_->at(x, y) = pixel.normal;
   face_->at(x, y) = Color(static_cast<float>(screen_.faces[face].sceneFace));
+}
+
+PixelWrite RasterFrame::writeOf(int x, int y, int face, float inverseDepth, bool kept) const {
+  const ShadedPixel pixel =
+      shader_.shade(face, Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+  return {x, y, pixel.color, screen_.faces[face].sceneFace, inverseDepth, kept};
+}
+
+StepShape outlineOf(std::span<const Vec3> corners, std::string role) {
+  StepShape shape{StepShape::Kind::Polygon, std::move(role), {}};
+  for (const Vec3& corner : corners) shape.points.emplace_back(corner);
+  return shape;
 }
 
 std::uint64_t RasterFrame::coveredPixels() const {

@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "raster/bands.hpp"
@@ -96,6 +97,7 @@ class BandSweep {
     for (int y = band_.y0; y < band_.y1; ++y) {
       updateActiveEdges(y);
       drawSpans(y);
+      if (StepRecorder* steps = frame_.steps()) steps->record(scanlineStep(y), y);
       emitScanline(y);
     }
   }
@@ -137,7 +139,11 @@ class BandSweep {
         std::max<std::uint64_t>(counters_.activeEdgesMax, activeEdges_.size());
   }
 
-  void drawSpans(int y) {
+  // Calls span(order, left, right) for each active polygon: its edges lie
+  // side by side in the list, and its span runs from the leftmost to the
+  // rightmost.
+  template <typename Span>
+  void forEachSpan(const Span& span) const {
     for (std::size_t first = 0; first < activeEdges_.size();) {
       const int order = activeEdges_[first].polygonOrder;
       float left = kInfinity, right = -kInfinity;
@@ -146,9 +152,15 @@ class BandSweep {
         left = std::min(left, activeEdges_[next].x);
         right = std::max(right, activeEdges_[next].x);
       }
-      drawSpan(y, screen_.polygons[polygons_[order]].face, left, right);
+      span(order, left, right);
       first = next;
     }
+  }
+
+  void drawSpans(int y) {
+    forEachSpan([&](int order, float left, float right) {
+      drawSpan(y, screen_.polygons[polygons_[order]].face, left, right);
+    });
   }
 
   // The centres x + 1/2 in [left, right).
@@ -177,6 +189,57 @@ class BandSweep {
       lineInverseDepth_[x] = 0.0f;
       lineFace_[x] = -1;
     }
+  }
+
+  // The scanline as a student follows it: the edges entering from the edge
+  // table, the active edge list, the spans, and the one-scanline buffers.
+  Step scanlineStep(int y) const {
+    Step step;
+    step.kind = "scanline";
+    step.text = "scanline " + std::to_string(y) + ": " +
+                std::to_string(edgeTable_[y - band_.y0].size()) + " edges enter, " +
+                std::to_string(activeEdges_.size()) + " are active";
+    const auto edgeRows = [&](const std::vector<ActiveEdge>& edges) {
+      StepTable table{"", {"x", "dx/dy", "end scanline", "polygon"}, {}};
+      for (const ActiveEdge& edge : edges)
+        table.rows.push_back({edge.x, edge.step, static_cast<double>(edge.endScanline),
+                              static_cast<double>(polygons_[edge.polygonOrder])});
+      return table;
+    };
+    step.tables.push_back(edgeRows(edgeTable_[y - band_.y0]));
+    step.tables.back().title = "edges entering from the edge table";
+    step.tables.push_back(edgeRows(activeEdges_));
+    step.tables.back().title = "active edge list";
+    for (const ActiveEdge& edge : activeEdges_)
+      step.shapes.push_back(
+          {StepShape::Kind::Point, "edge", {{edge.x, static_cast<float>(y) + 0.5f}}});
+    StepTable spans{"spans", {"polygon", "face", "left", "right"}, {}};
+    const float centre = static_cast<float>(y) + 0.5f;
+    forEachSpan([&](int order, float left, float right) {
+      const int polygon = polygons_[order];
+      spans.rows.push_back({static_cast<double>(polygon),
+                            static_cast<double>(frame_.sceneFaceOf(screen_.polygons[polygon].face)),
+                            left, right});
+      step.shapes.push_back({StepShape::Kind::Segment, "span", {{left, centre}, {right, centre}}});
+    });
+    step.tables.push_back(std::move(spans));
+    step.tables.push_back(lineBuffers());
+    step.settled.push_back({0, y, frame_.width(), y + 1});
+    return step;
+  }
+
+  // The scanline's depth and face buffers, as runs of one face.
+  StepTable lineBuffers() const {
+    StepTable runs{"depth and face buffers", {"from x", "to x", "face", "w at first"}, {}};
+    for (int x = 0; x < frame_.width();) {
+      int end = x + 1;
+      while (end < frame_.width() && lineFace_[end] == lineFace_[x]) ++end;
+      const int face = lineFace_[x] < 0 ? -1 : frame_.sceneFaceOf(lineFace_[x]);
+      runs.rows.push_back({static_cast<double>(x), static_cast<double>(end - 1),
+                           static_cast<double>(face), lineInverseDepth_[x]});
+      x = end;
+    }
+    return runs;
   }
 
   const ScreenGeometry& screen_;

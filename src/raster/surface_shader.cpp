@@ -1,7 +1,6 @@
 #include "raster/surface_shader.hpp"
 
 #include "scene/textures/surface_mapping.hpp"
-#include "shading/phong.hpp"
 
 namespace rise {
 namespace {
@@ -29,29 +28,6 @@ SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessell
   if (shading_ == Shading::Gouraud) lightVertices(workers);
 }
 
-Color SurfaceShader::illuminate(const Material& material, const SurfaceColors& colors,
-                                const Vec3& position, const Vec3& surfaceNormal,
-                                const Vec3& shadingNormal) const {
-  const Vec3 toViewer = glm::normalize(eye_ - position);
-  Color color = phongAmbient(material, colors, scene_.ambient);
-  for (const auto& light : scene_.lights) {
-    const LightSample sample = light->illuminate(position);
-    // A light behind the surface is hidden by it, however far a bump or
-    // normal map tilts the shading normal, as the ray tracer finds.
-    if (glm::dot(surfaceNormal, sample.toLight) <= 0.0f) continue;
-    color += phongDirect(material, colors, shadingNormal, toViewer, sample);
-  }
-  return color;
-}
-
-// The model is linear in C and ks: I(C, ks) = C * I(1, 0) + ks * I(0, 1).
-SurfaceShader::Illumination SurfaceShader::illumination(const Material& material,
-                                                        const Vec3& position,
-                                                        const Vec3& normal) const {
-  return {illuminate(material, {Color(1.0f), Color(0.0f)}, position, normal, normal),
-          illuminate(material, {Color(0.0f), Color(1.0f)}, position, normal, normal)};
-}
-
 void SurfaceShader::lightFaces(const Workers& workers) {
   faceLight_.resize(screen_.faces.size());
   workers.forEachRange(
@@ -62,8 +38,9 @@ void SurfaceShader::lightFaces(const Workers& workers) {
           const Vec3& b = tessellated_.vertices[face.vertices[1]].position;
           const Vec3& c = tessellated_.vertices[face.vertices[2]].position;
           const Vec3 normal = glm::normalize(glm::cross(b - a, c - a));
-          faceLight_[f] = illumination(scene_.materials[face.material], (a + b + c) / 3.0f,
-                                       towardsEye(normal, sideSeen(screen_.faces[f])));
+          faceLight_[f] =
+              splitUnshadowedLight(scene_, scene_.materials[face.material], (a + b + c) / 3.0f,
+                                   towardsEye(normal, sideSeen(screen_.faces[f])), eye_);
         }
       });
 }
@@ -87,8 +64,9 @@ void SurfaceShader::lightVertices(const Workers& workers) {
           for (int v = begin; v < end; ++v) {
             if (material[side][v] < 0) continue;
             const SurfaceVertex& vertex = tessellated_.vertices[v];
-            vertexLight_[side][v] = illumination(scene_.materials[material[side][v]],
-                                                 vertex.position, towardsEye(vertex.normal, side));
+            vertexLight_[side][v] =
+                splitUnshadowedLight(scene_, scene_.materials[material[side][v]], vertex.position,
+                                     towardsEye(vertex.normal, side), eye_);
           }
         });
   }
@@ -123,7 +101,7 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
       weights.x * a.uv + weights.y * b.uv + weights.z * c.uv);
 
   const Material& material = scene_.materials[sceneFace.material];
-  const SurfaceColors colors = material.colorsOverFootprint(surface, uvFootprint(face, centre));
+  const SurfaceColors colors = surfaceColors(material, surface, uvFootprint(face, centre));
   const int side = sideSeen(screenFace);
   Color color;
   switch (shading_) {
@@ -131,9 +109,9 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
       color = faceLight_[face].with(colors);
       break;
     case Shading::Gouraud: {
-      const std::vector<Illumination>& lit = vertexLight_[side];
+      const std::vector<SplitLight>& lit = vertexLight_[side];
       const auto& [ia, ib, ic] = sceneFace.vertices;
-      const Illumination interpolated{
+      const SplitLight interpolated{
           weights.x * lit[ia].byColor + weights.y * lit[ib].byColor + weights.z * lit[ic].byColor,
           weights.x * lit[ia].byKs + weights.y * lit[ib].byKs + weights.z * lit[ic].byKs};
       color = interpolated.with(colors);
@@ -145,10 +123,11 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
       if (material.bump || material.normalMap) {
         triangleTangents(a.position, b.position, c.position, a.uv, b.uv, c.uv, surface.dpdu,
                          surface.dpdv);
-        surface.shadingNormal = material.shadingNormalAt(surface);
+        surface.shadingNormal = shadingNormal(material, surface);
       }
-      color = illuminate(material, colors, surface.position, towardsEye(surface.normal, side),
-                         towardsEye(surface.shadingNormal, side));
+      color = unshadowedLight(scene_, material, colors, surface.position,
+                              towardsEye(surface.normal, side),
+                              towardsEye(surface.shadingNormal, side), eye_);
       break;
   }
   return {color, glm::length(surface.position - eye_), surface.normal};

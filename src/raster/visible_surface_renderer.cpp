@@ -67,7 +67,8 @@ std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
   return passes;
 }
 
-// Reports the progress of one pass as its share of all of them.
+// Reports the progress of one pass as its share of all of them; the steps of
+// the first pass alone are recorded, the others repeating them.
 class PassObserver final : public RenderObserver {
  public:
   PassObserver(RenderObserver& whole, int pass, int passes)
@@ -76,6 +77,7 @@ class PassObserver final : public RenderObserver {
     whole_.onProgress((pass_ + fractionDone) / passes_);
   }
   bool cancelled() const override { return whole_.cancelled(); }
+  StepRecorder* stepRecorder() override { return pass_ == 0 ? whole_.stepRecorder() : nullptr; }
 
  private:
   RenderObserver& whole_;
@@ -136,7 +138,7 @@ RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
   const ScreenGeometry screen = projectScene(tessellated, view, settings.backfaceCulling, workers);
   const SurfaceShader shader(scene, tessellated, screen, view, settings.shading, workers);
   RasterFrame frame(settings.width, settings.height, scene.image.background, screen, shader,
-                    workers);
+                    workers, observer.stepRecorder());
 
   Stats stats;
   addProjectionStats(stats, screen);

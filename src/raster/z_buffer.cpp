@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "raster/bands.hpp"
@@ -71,13 +72,29 @@ struct ZBuffer {
   std::unique_ptr<int[]> face;            // -1: none
 };
 
+// The step of drawing one polygon, in the band's part: where it was nearer
+// than what the buffer held, and where it was not.
+Step polygonDrawn(const ScreenGeometry& screen, int index, const RasterFrame& frame) {
+  const ScreenPolygon& polygon = screen.polygons[index];
+  Step step;
+  step.kind = "polygon";
+  step.text = "polygon " + std::to_string(index) + " (face " +
+              std::to_string(frame.sceneFaceOf(polygon.face)) +
+              "): each pixel it covers takes it if it is nearer than the depth in the buffer";
+  step.shapes.push_back(outlineOf(screen.cornersOf(polygon), "polygon"));
+  return step;
+}
+
 void drawBand(const ScreenGeometry& screen, const PixelRect& band, std::span<const int> polygons,
               ZBuffer& buffer, RasterFrame& frame, ZBufferCounters& counters) {
   buffer.clear(band);
+  StepRecorder* const steps = frame.steps();
   PolygonCoverage coverage;
   for (int index : polygons) {
     const ScreenPolygon& polygon = screen.polygons[index];
     const ScreenFace& face = screen.faces[polygon.face];
+    Step step;
+    if (steps) step = polygonDrawn(screen, index, frame);
     coverage.reset(screen.cornersOf(polygon));
     coverage.forEachPixel(band, [&](int x, int y) {
       ++counters.depthTests;
@@ -85,11 +102,14 @@ void drawBand(const ScreenGeometry& screen, const PixelRect& band, std::span<con
       const std::size_t pixel = buffer.index(x, y);
       const float inverseDepth =
           face.inverseDepthAt(Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
-      if (inverseDepth <= buffer.inverseDepth[pixel]) return;
+      const bool nearer = inverseDepth > buffer.inverseDepth[pixel];
+      if (steps) step.writes.push_back(frame.writeOf(x, y, polygon.face, inverseDepth, nearer));
+      if (!nearer) return;
       buffer.inverseDepth[pixel] = inverseDepth;
       buffer.face[pixel] = polygon.face;
       ++counters.pixelsWritten;
     });
+    if (steps) steps->record(std::move(step), index, band.y0);
   }
   for (int y = band.y0; y < band.y1; ++y)
     for (int x = band.x0; x < band.x1; ++x)

@@ -1,6 +1,7 @@
 #include "ray/bvh.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <experimental/simd>
 #include <limits>
@@ -21,21 +22,42 @@ Bounds3 widened(const Bounds3& box) {
   return {box.min - allowance, box.max + allowance};
 }
 
+// A share of a loop is not worth a thread of its own below this many steps.
+constexpr std::size_t kMinimumShare = 16 * 1024;
+
+// Calls work(begin, end) on shares of [0, count) that split it, each on a
+// thread of its own, on up to `threads` threads.
+template <typename Work>
+void inShares(std::size_t count, int threads, Work&& work) {
+  const std::size_t shares =
+      std::clamp<std::size_t>(count / kMinimumShare, 1, static_cast<std::size_t>(threads));
+  std::vector<std::thread> helpers;
+  for (std::size_t share = 1; share < shares; ++share)
+    helpers.emplace_back(
+        [&, share] { work(count * share / shares, count * (share + 1) / shares); });
+  work(0, count / shares);
+  for (std::thread& helper : helpers) helper.join();
+}
+
 std::vector<BuildPrimitive> primitivesOf(const std::vector<const Shape*>& shapes,
-                                         const std::vector<bool>& bounded) {
-  std::size_t count = 0;
+                                         const std::vector<bool>& bounded, int threads) {
+  std::vector<std::size_t> firstOf{0};  // of each shape, among all the primitives
   for (std::size_t shape = 0; shape < shapes.size(); ++shape)
-    if (bounded[shape]) count += static_cast<std::size_t>(shapes[shape]->primitiveCount());
-  std::vector<BuildPrimitive> primitives;
-  primitives.reserve(count);
-  for (std::size_t shape = 0; shape < shapes.size(); ++shape) {
-    if (!bounded[shape]) continue;
-    for (int primitive = 0; primitive < shapes[shape]->primitiveCount(); ++primitive) {
-      primitives.push_back(
-          {widened(shapes[shape]->primitiveBounds(primitive)),
-           {static_cast<std::uint32_t>(shape), static_cast<std::uint32_t>(primitive)}});
+    firstOf.push_back(
+        firstOf.back() +
+        (bounded[shape] ? static_cast<std::size_t>(shapes[shape]->primitiveCount()) : 0));
+  std::vector<BuildPrimitive> primitives(firstOf.back());
+  inShares(primitives.size(), threads, [&](std::size_t begin, std::size_t end) {
+    auto shape = static_cast<std::size_t>(std::upper_bound(firstOf.begin(), firstOf.end(), begin) -
+                                          firstOf.begin() - 1);
+    for (std::size_t i = begin; i < end; ++i) {
+      while (i == firstOf[shape + 1]) ++shape;
+      const auto primitive = static_cast<int>(i - firstOf[shape]);
+      primitives[i] = BuildPrimitive(
+          widened(shapes[shape]->primitiveBounds(primitive)),
+          PrimitiveRef{static_cast<std::uint32_t>(shape), static_cast<std::uint32_t>(primitive)});
     }
-  }
+  });
   return primitives;
 }
 
@@ -111,17 +133,20 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Shape>>& shapes, int threads) {
     bounded.push_back(shapes[i]->bounds().isFinite());
     if (!bounded.back()) unbounded_.push_back(static_cast<int>(i));
   }
-  const BuiltBvh built =
-      buildBvh(primitivesOf(shapes_, bounded), threads > 0 ? threads : hardwareThreads());
-  nodes_ = collapseBvh(built.nodes);
-  primitives_.reserve(built.primitives.size());
-  for (const PrimitiveRef& ref : built.primitives) {
-    std::array<Vec3, 3> corners{};
-    const bool isTriangle =
-        shapes_[ref.shape]->primitiveTriangle(static_cast<int>(ref.primitive), corners);
-    primitives_.push_back(
-        {ref, isTriangle, corners[0], corners[1] - corners[0], corners[2] - corners[0]});
-  }
+  if (threads <= 0) threads = hardwareThreads();
+  const BuiltBvh built = buildBvh(primitivesOf(shapes_, bounded, threads), threads);
+  nodes_ = collapseBvh(built.nodes());
+  primitives_.resize(built.primitives.size());
+  inShares(primitives_.size(), threads, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const PrimitiveRef ref = built.primitives[i].ref();
+      std::array<Vec3, 3> corners{};
+      const bool isTriangle =
+          shapes_[ref.shape]->primitiveTriangle(static_cast<int>(ref.primitive), corners);
+      primitives_[i] = {ref, isTriangle, corners[0], corners[1] - corners[0],
+                        corners[2] - corners[0]};
+    }
+  });
 }
 
 bool Bvh::intersectPrimitive(const LeafPrimitive& primitive, const Ray& ray, float tMin, Hit& hit,
@@ -173,6 +198,17 @@ void Bvh::traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCo
   counters.nodesVisited += boxesTested;
 }
 
+namespace {
+
+// The next float above t: std::nextafter(t, infinity), without a call into
+// the math library for the positive distances that hits have.
+float nextAbove(float t) {
+  if (t > 0.0f && t < kInfinity) return std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) + 1);
+  return std::nextafter(t, kInfinity);
+}
+
+}  // namespace
+
 // A ray through the edge that two triangles share meets both at the same t.
 // Brute force keeps the first it tests, the first in the scene's order; so
 // does the BVH, whatever order it tests them in, so that every structure
@@ -185,7 +221,7 @@ class NearestHit {
   template <typename Intersect>
   bool offer(PrimitiveRef ref, Intersect&& intersect) {
     Hit candidate = hit_;
-    candidate.t = std::nextafter(hit_.t, kInfinity);  // an equal t too
+    candidate.t = nextAbove(hit_.t);  // an equal t too
     if (!intersect(candidate)) return false;
     if (candidate.t == hit_.t && !(found_ && comesBefore(ref, ref_))) return false;
     hit_ = candidate;

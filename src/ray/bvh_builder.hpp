@@ -17,10 +17,14 @@
 // Bounding Volume Hierarchies", IEEE Symposium on Interactive Ray Tracing,
 // 2007), which makes each level one pass over its primitives.
 //
-// Large subtrees are built on threads of their own.
+// Large nodes are binned by all the threads at once, each binning a share
+// of the primitives; large subtrees are built on threads of their own.
 #pragma once
 
+#include <bit>
 #include <cstdint>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include "core/bounds.hpp"
@@ -37,19 +41,31 @@ struct PrimitiveRef {
 // offset and offset + 1.
 struct BvhNode {
   Bounds3 box;
-  std::uint32_t offset = 0;          // a leaf's first primitive, an inner node's first child
-  std::uint32_t primitiveCount = 0;  // 0 for an inner node
+  std::uint32_t offset;          // a leaf's first primitive, an inner node's first child
+  std::uint32_t primitiveCount;  // 0 for an inner node
 
   bool isLeaf() const { return primitiveCount > 0; }
 };
 
 // A primitive as the builder sees it: its box, whose centre (the centroid)
-// sorts it into bins.
-struct BuildPrimitive {
-  Bounds3 box;
-  PrimitiveRef ref;
+// sorts it into bins. The box's corners are two rows of four floats, which
+// SIMD instructions load whole; the fourth float of each row holds the bits
+// of half of the reference.
+struct alignas(16) BuildPrimitive {
+  BuildPrimitive() = default;
+  BuildPrimitive(const Bounds3& box, PrimitiveRef ref)
+      : lower{box.min.x, box.min.y, box.min.z, std::bit_cast<float>(ref.shape)},
+        upper{box.max.x, box.max.y, box.max.z, std::bit_cast<float>(ref.primitive)} {}
 
-  Vec3 centroid() const { return box.centre(); }
+  Bounds3 box() const {
+    return {Vec3(lower[0], lower[1], lower[2]), Vec3(upper[0], upper[1], upper[2])};
+  }
+  PrimitiveRef ref() const {
+    return {std::bit_cast<std::uint32_t>(lower[3]), std::bit_cast<std::uint32_t>(upper[3])};
+  }
+
+  alignas(16) float lower[4];
+  alignas(16) float upper[4];
 };
 
 // No path from the root to a leaf is longer, so that traversal can keep its
@@ -57,8 +73,13 @@ struct BuildPrimitive {
 inline constexpr int kMaxBvhDepth = 64;
 
 struct BuiltBvh {
-  std::vector<BvhNode> nodes;            // the root first; empty when there were no primitives
-  std::vector<PrimitiveRef> primitives;  // in leaf order: a leaf's are contiguous
+  // The root first; none when there were no primitives. Left uninitialised
+  // when allocated, so that the threads that fill them bring in their pages.
+  std::unique_ptr<BvhNode[]> nodeStorage;
+  std::size_t nodeCount = 0;
+  std::vector<BuildPrimitive> primitives;  // in leaf order: a leaf's are contiguous
+
+  std::span<const BvhNode> nodes() const { return {nodeStorage.get(), nodeCount}; }
 };
 
 // Builds the hierarchy on up to `threads` threads.

@@ -153,27 +153,30 @@ RenderResult DistributedRayTracer::render(const Scene& scene, const RenderSettin
   const ViewFrame view(scene.camera, settings.width, settings.height);
   const bool motionBlur = scene.camera.hasMotionBlur();
   const auto traceSample = [&](const Vec2& raster, const CameraSample& sample, Rng& rng,
-                               TraceCounters& counters) {
+                               TraceCounters& counters, RayTree* tree) {
     Ray ray = thinLensRay(view, raster, sample.lens);
     // Rays carry the time as a fraction of the shutter interval.
     ray.time = motionBlur ? sample.time : 0.0f;
+    if (tree)
+      tree->dimensions = SampleDimensions{sample.lens, ray.time, sample.light, sample.gloss};
     DistributedChoices choices(sample, rng);
-    return tracePrimary(context, ray, choices, counters);
+    return tracePrimary(context, ray, choices, counters, tree);
   };
   const PixelSampling& sampling = settings.sampling;
   RenderResult result = traceImage(settings, observer, [&](TileTrace& tile) {
     if (sampling.pattern == SamplePattern::Adaptive)
-      return sampleAdaptively(tile, settings, [&](const Vec2& raster, Rng& rng, TraceCounters& c) {
-        return traceSample(raster, randomCameraSample(rng), rng, c);
-      });
+      return sampleAdaptively(tile, settings,
+                              [&](const Vec2& raster, Rng& rng, TraceCounters& c, RayTree* tree) {
+                                return traceSample(raster, randomCameraSample(rng), rng, c, tree);
+                              });
     CameraSampleSet samples;
     tracePixels(
         tile, settings.seed,
         [&](const glm::ivec2&, Rng& rng) -> const std::vector<Vec2>& {
           return samples.generate(sampling, rng);
         },
-        [&](const glm::ivec2& pixel, int i, Rng& rng, TraceCounters& counters) {
-          return traceSample(Vec2(pixel) + samples.offset(i), samples[i], rng, counters);
+        [&](const glm::ivec2& pixel, int i, Rng& rng, TraceCounters& counters, RayTree* tree) {
+          return traceSample(Vec2(pixel) + samples.offset(i), samples[i], rng, counters, tree);
         });
   });
   intersector.addBuildStats(result.stats);

@@ -1,5 +1,7 @@
 #include "ray/image_sampler.hpp"
 
+#include <string>
+
 namespace rise {
 
 AlgorithmDescription rayTracingAlgorithm(std::string_view name, std::string_view summary,
@@ -13,9 +15,11 @@ AlgorithmDescription rayTracingAlgorithm(std::string_view name, std::string_view
           std::move(effects)};
 }
 
-TileTrace::TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers)
+TileTrace::TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers,
+                     StepRecorder* steps)
     : area_(area),
       film_(std::move(film)),
+      steps_(steps),
       depth_(buffers.buffers.at("depth")),
       normal_(buffers.buffers.at("normal")),
       cost_(buffers.buffers.at("cost")) {}
@@ -27,6 +31,26 @@ void TileTrace::recordBuffers(const glm::ivec2& pixel, const SampleResult& shown
   cost_.at(pixel.x, pixel.y) = Color(static_cast<float>(tests));
 }
 
+namespace {
+
+Step tileStep(const TileTrace& tile) {
+  const PixelRect& area = tile.area();
+  Step step{"tile", "tile " + std::to_string(area.x0) + "," + std::to_string(area.y0) + " " +
+                        std::to_string(area.width()) + "x" + std::to_string(area.height()) +
+                        " traced: " + std::to_string(tile.counters.rays()) + " rays, " +
+                        std::to_string(tile.counters.intersections.tests) + " intersection tests"};
+  step.values = {{"rays", static_cast<double>(tile.counters.rays())},
+                 {"intersection_tests", static_cast<double>(tile.counters.intersections.tests)}};
+  step.shapes.push_back({StepShape::Kind::Rectangle,
+                         "tile",
+                         {Vec2(static_cast<float>(area.x0), static_cast<float>(area.y0)),
+                          Vec2(static_cast<float>(area.x1), static_cast<float>(area.y1))}});
+  step.settled.push_back(area);
+  return step;
+}
+
+}  // namespace
+
 RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer,
                         const std::function<void(TileTrace&)>& traceTile) {
   RenderResult result;
@@ -35,12 +59,16 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
   result.buffers["cost"] = Image(settings.width, settings.height);
   Film film(settings.width, settings.height, settings.sampling.filter);
 
+  StepRecorder* const steps = observer.stepRecorder();
   std::vector<TileTrace> tiles;
   for (const PixelRect& area : makeTiles(settings.width, settings.height))
-    tiles.emplace_back(area, film.tileFor(area), result);
+    tiles.emplace_back(area, film.tileFor(area), result, steps);
   const Workers workers(settings.threads, observer);
-  workers.forEachTask(static_cast<int>(tiles.size()),
-                      [&](int tile) { traceTile(tiles[static_cast<std::size_t>(tile)]); });
+  workers.forEachTask(static_cast<int>(tiles.size()), [&](int index) {
+    TileTrace& tile = tiles[static_cast<std::size_t>(index)];
+    traceTile(tile);
+    if (steps) steps->record(tileStep(tile), index);
+  });
 
   TraceCounters counters;
   std::uint64_t refinedPixels = 0;

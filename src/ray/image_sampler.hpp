@@ -34,9 +34,11 @@ AlgorithmDescription rayTracingAlgorithm(std::string_view name, std::string_view
 // A tile being traced: where its samples go and what they cost.
 class TileTrace {
  public:
-  TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers);
+  TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers, StepRecorder* steps);
 
   const PixelRect& area() const { return area_; }
+  // Where the ray trees of a pixel are recorded, or nullptr.
+  StepRecorder* steps() const { return steps_; }
 
   // A sample taken in `pixel` at `offset` from its top-left corner.
   void addSample(const glm::ivec2& pixel, const Vec2& offset, const Color& color) {
@@ -54,6 +56,7 @@ class TileTrace {
  private:
   PixelRect area_;
   FilmTile film_;
+  StepRecorder* steps_;
   Image& depth_;
   Image& normal_;
   Image& cost_;
@@ -61,14 +64,16 @@ class TileTrace {
 
 // Renders the image by calling traceTile for every tile, on the workers, and
 // returns it with the auxiliary buffers and the counters summed in tile order.
+// Each tile is a step of the render, for whoever records them.
 RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer,
                         const std::function<void(TileTrace&)>& traceTile);
 
 // The common pixel loop: for each pixel of the tile, a generator seeded by
 // the pixel alone (so that the image does not depend on which thread traced
 // it); place(pixel, rng) puts the pixel's samples and returns their offsets
-// in it; trace(pixel, i, rng, counters) traces sample i. Every sample goes to
-// the film, the first to the buffers.
+// in it; trace(pixel, i, rng, counters, tree) traces sample i, recording its
+// rays in `tree` unless that is null. Every sample goes to the film, the
+// first to the buffers.
 template <typename Place, typename Trace>
 void tracePixels(TileTrace& tile, std::uint64_t seed, const Place& place, const Trace& trace) {
   const PixelRect& area = tile.area();
@@ -79,8 +84,12 @@ void tracePixels(TileTrace& tile, std::uint64_t seed, const Place& place, const 
       const std::vector<Vec2>& offsets = place(pixel, rng);
       const std::uint64_t testsBefore = tile.counters.intersections.tests;
       SampleResult first;
+      const bool recording = tile.steps() && tile.steps()->wantsTreeOf(pixel);
       for (int i = 0; i < static_cast<int>(offsets.size()); ++i) {
-        const SampleResult sample = trace(pixel, i, rng, tile.counters);
+        RayTree tree{pixel, i, Vec2(pixel) + offsets[static_cast<std::size_t>(i)]};
+        const SampleResult sample =
+            trace(pixel, i, rng, tile.counters, recording ? &tree : nullptr);
+        if (recording) tile.steps()->recordTree(std::move(tree));
         tile.addSample(pixel, offsets[static_cast<std::size_t>(i)], sample.color);
         if (i == 0) first = sample;
       }

@@ -28,7 +28,9 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 
+#include "ray/ray_tree_builder.hpp"
 #include "scene/light.hpp"
 #include "shading/phong.hpp"
 
@@ -58,7 +60,7 @@ namespace {
 ShadingFrame shadingFrame(const Ray& ray, const Hit& hit, const Material& material) {
   ShadingFrame frame;
   frame.surface = hit.shape->surfaceAt(ray, hit);
-  frame.surface.shadingNormal = material.shadingNormalAt(frame.surface);
+  frame.surface.shadingNormal = shadingNormal(material, frame.surface);
   frame.toViewer = -glm::normalize(ray.direction);
   frame.time = ray.time;
   frame.entering = glm::dot(frame.surface.normal, frame.toViewer) > 0.0f;
@@ -74,35 +76,57 @@ Ray spawnRay(const ShadingFrame& frame, const Vec3& direction) {
   return Ray{frame.surface.position + (side * kRayEpsilon) * frame.normal, direction, frame.time};
 }
 
-// One ray's journey and the rays it gives rise to.
+// One ray's journey and the rays it gives rise to. When a tree is being
+// recorded for a student, every ray is told to it as it is traced.
 class Recursion {
  public:
-  Recursion(const TracingContext& context, PathChoices& choices, TraceCounters& counters)
-      : context_(context), choices_(choices), counters_(counters) {}
+  Recursion(const TracingContext& context, PathChoices& choices, TraceCounters& counters,
+            RayTreeBuilder* tree)
+      : context_(context), choices_(choices), counters_(counters), tree_(tree) {}
 
-  // Intersect: the nearest hit, shaded, or the background.
-  Color trace(const Ray& ray, int depth) {
+  // Intersect: the nearest hit, shaded, or the background. `weight` is what
+  // the colour it brings back will be multiplied by, for the tree.
+  Color trace(const Ray& ray, int depth, RayKind kind, const Color& weight) {
+    if (tree_) tree_->begin(kind, ray, depth, weight);
     Hit hit;
-    if (!context_.intersector.nearest(ray, 0.0f, hit, counters_.intersections))
-      return context_.scene.image.background;
-    const Material& material = context_.scene.materialOf(*hit.shape);
-    return shade(shadingFrame(ray, hit, material), material, depth);
-  }
-
-  // Shade: the local Phong model, then the mirror and the refracted rays.
-  Color shade(const ShadingFrame& frame, const Material& material, int depth) {
-    const SurfaceColors colors = material.colorsAt(frame.surface);
-    Color color = phongAmbient(material, colors, context_.scene.ambient) +
-                  directLight(frame, material, colors, depth);
-    if (depth >= context_.maxDepth) return color;
-    if (material.reflection > 0.0f)
-      color += material.reflection * reflected(frame, material, depth);
-    if (material.transmission > 0.0f)
-      color += material.transmission * material.color * refracted(frame, material, depth);
+    Color color = context_.scene.image.background;
+    if (context_.intersector.nearest(ray, 0.0f, hit, counters_.intersections)) {
+      const Material& material = context_.scene.materialOf(*hit.shape);
+      const ShadingFrame frame = shadingFrame(ray, hit, material);
+      if (depth == 1)
+        seen_ = {Color(0.0f), hit.t * glm::length(ray.direction), frame.surface.normal};
+      if (tree_) tree_->hit(hit, frame.surface);
+      color = shade(frame, material, depth);
+    }
+    if (tree_) tree_->end(color);
     return color;
   }
 
+  // What the primary ray hit, for the auxiliary buffers.
+  const SampleResult& seen() const { return seen_; }
+
  private:
+  // Shade: the local Phong model, then the mirror and the refracted rays.
+  Color shade(const ShadingFrame& frame, const Material& material, int depth) {
+    const SurfaceColors colors = surfaceColors(material, frame.surface);
+    const Color ambient = phongAmbient(material, colors, context_.scene.ambient);
+    if (tree_) tree_->ambient(ambient);
+    Color color = ambient + directLight(frame, material, colors, depth);
+    if (depth >= context_.maxDepth) return color;
+    if (material.reflection > 0.0f)
+      color += spawned(RayKind::Reflection, Color(material.reflection),
+                       reflectedRay(frame, material, depth), depth);
+    if (material.transmission > 0.0f)
+      color += spawned(RayKind::Refraction, material.transmission * material.color,
+                       refractedRay(frame, material, depth), depth);
+    return color;
+  }
+
+  // A reflected or refracted ray traced, times its weight.
+  Color spawned(RayKind kind, const Color& weight, const Ray& ray, int depth) {
+    return weight * trace(ray, depth + 1, kind, weight);
+  }
+
   // The Phong terms of every light that a shadow ray reaches.
   Color directLight(const ShadingFrame& frame, const Material& material,
                     const SurfaceColors& colors, int depth) {
@@ -111,35 +135,42 @@ class Recursion {
       const LightSample sample = choices_.aimAt(*light, frame.surface.position, depth);
       if (glm::dot(frame.normal, sample.toLight) <= 0.0f) continue;
       ++counters_.shadowRays;
-      const Color visible = context_.intersector.transmittance(
-          spawnRay(frame, sample.toLight), 0.0f, sample.distance, counters_.intersections);
+      const Ray shadowRay = spawnRay(frame, sample.toLight);
+      const Color visible = context_.intersector.transmittance(shadowRay, 0.0f, sample.distance,
+                                                               counters_.intersections);
+      if (tree_)
+        tree_->shadow(shadowRay, *light, sample.distance, visible,
+                      phongDirect(material, {colors.color, Color(0.0f)}, frame.shadingNormal,
+                                  frame.toViewer, sample),
+                      phongDirect(material, {Color(0.0f), colors.ks}, frame.shadingNormal,
+                                  frame.toViewer, sample));
       if (visible == Color(0.0f)) continue;
       color += visible * phongDirect(material, colors, frame.shadingNormal, frame.toViewer, sample);
     }
     return color;
   }
 
-  Color reflected(const ShadingFrame& frame, const Material& material, int depth) {
+  Ray reflectedRay(const ShadingFrame& frame, const Material& material, int depth) {
     ++counters_.reflectionRays;
     const Vec3 mirror = glm::reflect(-frame.toViewer, frame.shadingNormal);
-    const Vec3 direction = choices_.scatter(mirror, material.roughness, frame.normal, depth);
-    return trace(spawnRay(frame, direction), depth + 1);
+    return spawnRay(frame, choices_.scatter(mirror, material.roughness, frame.normal, depth));
   }
 
   // Snell's law with the relative index of the two sides; past the critical
   // angle there is no refracted ray and the light reflects totally.
-  Color refracted(const ShadingFrame& frame, const Material& material, int depth) {
+  Ray refractedRay(const ShadingFrame& frame, const Material& material, int depth) {
     ++counters_.refractionRays;
     const float eta = frame.entering ? 1.0f / material.ior : material.ior;
     Vec3 direction = glm::refract(-frame.toViewer, frame.shadingNormal, eta);
     if (direction == Vec3(0.0f)) direction = glm::reflect(-frame.toViewer, frame.shadingNormal);
-    direction = choices_.scatter(direction, material.roughness, frame.normal, depth);
-    return trace(spawnRay(frame, direction), depth + 1);
+    return spawnRay(frame, choices_.scatter(direction, material.roughness, frame.normal, depth));
   }
 
   const TracingContext& context_;
   PathChoices& choices_;
   TraceCounters& counters_;
+  RayTreeBuilder* tree_;
+  SampleResult seen_;
 };
 
 // Whitted's one ray for every choice: the light's centre, the ideal
@@ -155,16 +186,16 @@ class SingleRayChoices final : public PathChoices {
 }  // namespace
 
 SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathChoices& choices,
-                          TraceCounters& counters) {
+                          TraceCounters& counters, RayTree* tree) {
   ++counters.primaryRays;
-  Hit hit;
-  if (!context.intersector.nearest(ray, 0.0f, hit, counters.intersections))
-    return {context.scene.image.background};
-  const Material& material = context.scene.materialOf(*hit.shape);
-  const ShadingFrame frame = shadingFrame(ray, hit, material);
-  Recursion recursion(context, choices, counters);
-  return {recursion.shade(frame, material, 1), hit.t * glm::length(ray.direction),
-          frame.surface.normal};
+  std::optional<RayTreeBuilder> builder;
+  if (tree) builder.emplace(context.scene, *tree);
+  Recursion recursion(context, choices, counters, builder ? &*builder : nullptr);
+  const Color color = recursion.trace(ray, 1, RayKind::Primary, Color(1.0f));
+  if (tree) tree->color = color;
+  SampleResult result = recursion.seen();
+  result.color = color;
+  return result;
 }
 
 namespace {
@@ -208,7 +239,7 @@ class AdaptiveRefinement {
   bool refined() const { return refined_; }
 
  private:
-  Color colorAt(const Vec2& raster) { return traceAt_(raster, rng_, counters_).color; }
+  Color colorAt(const Vec2& raster) { return traceAt_(raster, rng_, counters_, nullptr).color; }
 
   const TraceAt& traceAt_;
   float threshold_;
@@ -237,7 +268,8 @@ void sampleAdaptively(TileTrace& tile, const RenderSettings& settings, const Tra
     for (int x = area.x0; x <= area.x1; ++x) {
       Rng rng(pixelSeed(settings.seed, x, y), 1);
       const std::uint64_t testsBefore = counters.intersections.tests;
-      corners.push_back(traceAt(Vec2(static_cast<float>(x), static_cast<float>(y)), rng, counters));
+      corners.push_back(
+          traceAt(Vec2(static_cast<float>(x), static_cast<float>(y)), rng, counters, nullptr));
       cornerTests.push_back(counters.intersections.tests - testsBefore);
     }
   }
@@ -268,9 +300,9 @@ RenderResult WhittedRayTracer::render(const Scene& scene, const RenderSettings& 
   const SceneIntersector intersector(scene, settings.accel, settings.threads);
   const TracingContext context{scene, intersector, settings.maxDepth};
   const ViewFrame view(scene.camera, settings.width, settings.height);
-  const TraceAt traceAt = [&](const Vec2& raster, Rng&, TraceCounters& counters) {
+  const TraceAt traceAt = [&](const Vec2& raster, Rng&, TraceCounters& counters, RayTree* tree) {
     SingleRayChoices single;
-    return tracePrimary(context, view.primaryRay(raster.x, raster.y), single, counters);
+    return tracePrimary(context, view.primaryRay(raster.x, raster.y), single, counters, tree);
   };
   const PixelSampling& sampling = settings.sampling;
   RenderResult result = traceImage(settings, observer, [&](TileTrace& tile) {
@@ -283,8 +315,8 @@ RenderResult WhittedRayTracer::render(const Scene& scene, const RenderSettings& 
           samplePositions(sampling.pattern, sampling.samples, rng, offsets);
           return offsets;
         },
-        [&](const glm::ivec2& pixel, int i, Rng& rng, TraceCounters& counters) {
-          return traceAt(Vec2(pixel) + offsets[static_cast<std::size_t>(i)], rng, counters);
+        [&](const glm::ivec2& pixel, int i, Rng& rng, TraceCounters& counters, RayTree* tree) {
+          return traceAt(Vec2(pixel) + offsets[static_cast<std::size_t>(i)], rng, counters, tree);
         });
   });
   intersector.addBuildStats(result.stats);

@@ -41,13 +41,15 @@ struct TracingContext {
 };
 
 // Whitted's recursive Intersect and Shade, from a ray that leaves the eye:
-// the colour seen along it, and what it hit.
+// the colour seen along it, and what it hit; every ray recorded in `tree`
+// when there is one.
 SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathChoices& choices,
-                          TraceCounters& counters);
+                          TraceCounters& counters, RayTree* tree = nullptr);
 
-// Traces the sample at a raster position: (i + 0.5, j + 0.5) is pixel (i,
-// j)'s centre.
-using TraceAt = std::function<SampleResult(const Vec2& raster, Rng& rng, TraceCounters& counters)>;
+// Traces the sample at a raster position ((i + 0.5, j + 0.5) is pixel (i,
+// j)'s centre), recording its rays in `tree` unless that is null.
+using TraceAt = std::function<SampleResult(const Vec2& raster, Rng& rng, TraceCounters& counters,
+                                           RayTree* tree)>;
 
 // Whitted's adaptive supersampling of every pixel of the tile.
 void sampleAdaptively(TileTrace& tile, const RenderSettings& settings, const TraceAt& traceAt);

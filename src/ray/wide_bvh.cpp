@@ -1,6 +1,7 @@
 #include "ray/wide_bvh.hpp"
 
 #include <algorithm>
+#include <array>
 
 namespace rise {
 namespace {
@@ -23,12 +24,16 @@ void setChildBox(WideBvhNode& node, int child, const Bounds3& box) {
 
 class Collapser {
  public:
-  explicit Collapser(const std::vector<BvhNode>& binary) : binary_(binary) {}
+  explicit Collapser(std::span<const BvhNode> binary) : binary_(binary) {
+    // No more wide nodes than binary inner nodes: the vector never moves
+    // (pages reserved but not filled cost nothing).
+    wide_.reserve(binary.size() / 2 + 1);
+  }
 
   std::vector<WideBvhNode> run() {
     if (binary_.empty()) return {};
     if (binary_[0].isLeaf()) {
-      addNode({0});
+      addNode({{0}, 1});
     } else {
       collapse(0);
     }
@@ -39,10 +44,21 @@ class Collapser {
   // Makes the wide node of the binary inner node `inner`; returns its index.
   std::uint32_t collapse(std::uint32_t inner) { return addNode(descendantsToKeep(inner)); }
 
+  // Up to four binary nodes, the children of a wide one.
+  struct Children {
+    std::array<std::uint32_t, kWideBvhWidth> nodes;
+    std::size_t count;
+
+    std::uint32_t* begin() { return nodes.data(); }
+    std::uint32_t* end() { return nodes.data() + count; }
+    std::size_t size() const { return count; }
+    std::uint32_t operator[](std::size_t slot) const { return nodes[slot]; }
+  };
+
   // The children of the binary inner node, with the inner ones among them
   // opened into theirs, the largest first, while there is room for both.
-  std::vector<std::uint32_t> descendantsToKeep(std::uint32_t inner) const {
-    std::vector<std::uint32_t> kept{binary_[inner].offset, binary_[inner].offset + 1};
+  Children descendantsToKeep(std::uint32_t inner) const {
+    Children kept{{binary_[inner].offset, binary_[inner].offset + 1}, 2};
     while (kept.size() < kWideBvhWidth) {
       auto largest = kept.end();
       for (auto child = kept.begin(); child != kept.end(); ++child) {
@@ -54,12 +70,12 @@ class Collapser {
       if (largest == kept.end()) break;
       const std::uint32_t firstGrandchild = binary_[*largest].offset;
       *largest = firstGrandchild;
-      kept.push_back(firstGrandchild + 1);
+      kept.nodes[kept.count++] = firstGrandchild + 1;
     }
     return kept;
   }
 
-  std::uint32_t addNode(const std::vector<std::uint32_t>& children) {
+  std::uint32_t addNode(const Children& children) {
     const auto index = static_cast<std::uint32_t>(wide_.size());
     wide_.push_back(emptyNode());
     for (std::size_t slot = 0; slot < children.size(); ++slot) {
@@ -75,7 +91,7 @@ class Collapser {
     return index;
   }
 
-  const std::vector<BvhNode>& binary_;
+  std::span<const BvhNode> binary_;
   std::vector<WideBvhNode> wide_;
 };
 
@@ -97,7 +113,7 @@ Bounds3 WideBvhNode::childBox(int child) const {
   return box;
 }
 
-std::vector<WideBvhNode> collapseBvh(const std::vector<BvhNode>& binary) {
+std::vector<WideBvhNode> collapseBvh(std::span<const BvhNode> binary) {
   return Collapser(binary).run();
 }
 

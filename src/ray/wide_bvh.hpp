@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "ray/bvh_builder.hpp"
@@ -43,6 +44,6 @@ static_assert(sizeof(WideBvhNode) == 128, "two cache lines");
 
 // The four-wide tree of a binary one, its root first: a binary tree that is a
 // single leaf becomes a root with one child. Empty when `binary` is.
-std::vector<WideBvhNode> collapseBvh(const std::vector<BvhNode>& binary);
+std::vector<WideBvhNode> collapseBvh(std::span<const BvhNode> binary);
 
 }  // namespace rise

@@ -9,6 +9,7 @@
 #include "core/parallel.hpp"
 #include "core/stats.hpp"
 #include "render/render_settings.hpp"
+#include "render/step_recorder.hpp"
 #include "scene/scene.hpp"
 
 namespace rise {
@@ -28,8 +29,13 @@ struct RenderResult {
 };
 
 // Watches a render from outside: progress for a bar, cancellation for the
-// studio. The render calls it from its worker threads, one call at a time.
-class RenderObserver : public Progress {};
+// studio, and the algorithm's steps for whoever wants to see them. The render
+// calls it from its worker threads, one call at a time.
+class RenderObserver : public Progress {
+ public:
+  // Where the algorithm reports its steps, or nullptr when nobody listens.
+  virtual StepRecorder* stepRecorder() { return nullptr; }
+};
 
 // The two families of algorithms: those that project polygons and find the
 // one visible at each pixel (raster/), and those that trace rays (ray/).

@@ -10,13 +10,6 @@
 
 namespace rise {
 
-// What a material shows at a point of its surface, the two colours of the
-// Phong model that may vary over it: C, and ks, per channel.
-struct SurfaceColors {
-  Color color;  // C: the colour or the texture there
-  Color ks;     // the specular coefficient times the ks texture there
-};
-
 // The Phong illumination model's surface description, with the textbook's
 // names, plus what Whitted's ray tracer adds: mirror reflection and
 // transmission through a refracting interior.
@@ -43,23 +36,6 @@ struct Material {
   // map, shiny where it is bright, matte where it is black.
   std::shared_ptr<const Texture> ksTexture;
 
-  Color colorAt(const SurfacePoint& surface) const {
-    return texture ? texture->colorAt(surface) : color;
-  }
-  SurfaceColors colorsAt(const SurfacePoint& surface) const {
-    return {colorAt(surface), ksTexture ? ks * ksTexture->colorAt(surface) : Color(ks)};
-  }
-  // Over a pixel's footprint (scene/texture.hpp), for the mipmaps.
-  SurfaceColors colorsOverFootprint(const SurfacePoint& surface,
-                                    const PixelFootprint& footprint) const {
-    return {texture ? texture->colorOverFootprint(surface, footprint) : color,
-            ksTexture ? ks * ksTexture->colorOverFootprint(surface, footprint) : Color(ks)};
-  }
-  Vec3 shadingNormalAt(const SurfacePoint& surface) const {
-    SurfacePoint tilted = surface;
-    if (normalMap) tilted.shadingNormal = normalMap->shadingNormalAt(surface);
-    return bump ? bump->shadingNormalAt(tilted) : tilted.shadingNormal;
-  }
   bool isTransparent() const { return transmission > 0.0f; }
 };
 

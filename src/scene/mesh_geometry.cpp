@@ -1,5 +1,8 @@
 #include "scene/mesh_geometry.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <tuple>
 #include <utility>
 
 namespace rise {
@@ -42,6 +45,31 @@ void append(MeshGeometry& whole, const MeshGeometry& part) {
   const int offset = static_cast<int>(wholeVertices);
   for (const auto& [a, b, c] : part.triangles)
     whole.triangles.push_back({a + offset, b + offset, c + offset});
+}
+
+std::vector<std::uint32_t> weldedIndices(std::span<const Vec3> positions) {
+  const auto lexicographic = [&](std::uint32_t a, std::uint32_t b) {
+    const Vec3& p = positions[a];
+    const Vec3& q = positions[b];
+    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
+  };
+  std::vector<std::uint32_t> welded(positions.size());
+  std::vector<std::uint32_t> order;
+  order.reserve(positions.size());
+  std::uint32_t places = 0;
+  for (std::uint32_t vertex = 0; vertex < positions.size(); ++vertex) {
+    const Vec3& p = positions[vertex];
+    if (std::isnan(p.x) || std::isnan(p.y) || std::isnan(p.z))
+      welded[vertex] = places++;
+    else
+      order.push_back(vertex);
+  }
+  std::sort(order.begin(), order.end(), lexicographic);
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (i == 0 || lexicographic(order[i - 1], order[i])) ++places;
+    welded[order[i]] = places - 1;
+  }
+  return welded;
 }
 
 }  // namespace rise

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/math.hpp"
@@ -27,5 +29,11 @@ MeshGeometry transformed(MeshGeometry geometry, const Mat4& map);
 // there. Normals and texture coordinates that only one side has are padded
 // with zeros.
 void append(MeshGeometry& whole, const MeshGeometry& part);
+
+// For each vertex, a number shared by all the vertices at its point (meshes
+// often repeat a corner once for each of its texture coordinates), from 0 up
+// without gaps. A vertex with a coordinate that is not a number, which no
+// order can place, is a point of its own.
+std::vector<std::uint32_t> weldedIndices(std::span<const Vec3> positions);
 
 }  // namespace rise

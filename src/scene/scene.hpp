@@ -39,6 +39,9 @@ struct Scene {
   // What loading accepted with a fix, one line each for the person who wrote
   // the scene: "scene.yaml:9:20: warning: ...".
   std::vector<std::string> warnings;
+  // Each shape as the scene file names it, "sphere at line 16", for the
+  // explanations; empty for a scene built in code.
+  std::vector<std::string> shapeNames;
 
   const Material& materialOf(const Shape& shape) const { return materials[shape.material()]; }
 };

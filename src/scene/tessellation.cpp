@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
-#include <tuple>
 #include <utility>
 
 #include "scene/light.hpp"
+#include "scene/mesh_geometry.hpp"
 #include "scene/shape.hpp"
 
 namespace rise {
@@ -43,26 +43,6 @@ void tessellatePlaced(const Shape& shape, const Mat4& worldFromObject,
 }
 
 namespace {
-
-// The same number for every vertex at one place: meshes often repeat a corner
-// once for each of its texture coordinates.
-std::vector<std::uint32_t> weldedIndices(std::span<const Vec3> positions) {
-  const auto lexicographic = [&](std::uint32_t a, std::uint32_t b) {
-    const Vec3& p = positions[a];
-    const Vec3& q = positions[b];
-    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-  };
-  std::vector<std::uint32_t> order(positions.size());
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), lexicographic);
-  std::vector<std::uint32_t> welded(positions.size());
-  std::uint32_t place = 0;
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    if (i > 0 && lexicographic(order[i - 1], order[i])) ++place;
-    welded[order[i]] = place;
-  }
-  return welded;
-}
 
 // Whether each directed edge a -> b between the vertices `vertexOf` maps the
 // corners to occurs once, and its reverse b -> a once too. The edges leaving

@@ -1,28 +1,65 @@
 #include "scene/vertex_normals.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <map>
-#include <utility>
+#include <numeric>
 
 namespace rise {
 
 namespace {
 
-using PointKey = std::array<float, 3>;
+// The triangles around each point, in the mesh's order (a triangle with two
+// corners at one point is there twice), as one list cut into runs:
+// triangles[first[p] .. first[p + 1]) are point p's.
+struct TrianglesAround {
+  std::vector<int> first;
+  std::vector<int> triangles;
 
-PointKey keyOf(const Vec3& v) { return {v.x, v.y, v.z}; }
+  TrianglesAround(const MeshGeometry& mesh, const std::vector<std::uint32_t>& pointOf,
+                  std::size_t pointCount)
+      : first(pointCount + 1, 0), triangles(3 * mesh.triangles.size()) {
+    for (const auto& corners : mesh.triangles)
+      for (int vertex : corners) ++first[pointOf[vertex] + 1];
+    std::partial_sum(first.begin(), first.end(), first.begin());
+    std::vector<int> next(first.begin(), first.end() - 1);
+    for (std::size_t triangle = 0; triangle < mesh.triangles.size(); ++triangle)
+      for (int vertex : mesh.triangles[triangle])
+        triangles[next[pointOf[vertex]]++] = static_cast<int>(triangle);
+  }
+};
 
-// For each vertex, an index shared by all the vertices at its point.
-std::vector<int> pointIndices(const std::vector<Vec3>& positions, int& pointCount) {
-  std::map<PointKey, int> points;
-  std::vector<int> pointOf;
-  pointOf.reserve(positions.size());
-  for (const Vec3& position : positions)
-    pointOf.push_back(
-        points.try_emplace(keyOf(position), static_cast<int>(points.size())).first->second);
-  pointCount = static_cast<int>(points.size());
-  return pointOf;
-}
+// The smooth mesh's vertices: each of the mesh's vertices once for every
+// normal its corners get, in the order the corners first ask for them.
+class VerticesWithNormals {
+ public:
+  VerticesWithNormals(const MeshGeometry& mesh, MeshGeometry& smooth)
+      : mesh_(mesh), smooth_(smooth), firstCopy_(mesh.positions.size(), -1) {
+    smooth_.positions.reserve(mesh.positions.size());
+    smooth_.normals.reserve(mesh.positions.size());
+  }
+
+  // The smooth mesh's vertex for the vertex with this normal.
+  int of(int vertex, const Vec3& normal) {
+    int last = -1;
+    for (int copy = firstCopy_[vertex]; copy >= 0; copy = nextCopy_[copy]) {
+      if (smooth_.normals[copy] == normal) return copy;
+      last = copy;
+    }
+    const int added = static_cast<int>(smooth_.positions.size());
+    (last < 0 ? firstCopy_[vertex] : nextCopy_[last]) = added;
+    nextCopy_.push_back(-1);
+    smooth_.positions.push_back(mesh_.positions[vertex]);
+    smooth_.normals.push_back(normal);
+    if (!mesh_.uvs.empty()) smooth_.uvs.push_back(mesh_.uvs[vertex]);
+    return added;
+  }
+
+ private:
+  const MeshGeometry& mesh_;
+  MeshGeometry& smooth_;
+  std::vector<int> firstCopy_;  // of each vertex of the mesh, or -1
+  std::vector<int> nextCopy_;   // of the same vertex, after each of the smooth mesh's, or -1
+};
 
 }  // namespace
 
@@ -30,6 +67,8 @@ MeshGeometry withVertexNormals(const MeshGeometry& mesh, float creaseAngleDegree
   // The cross product of two edges is the normal weighted by twice the area.
   std::vector<Vec3> weightedNormals;
   std::vector<Vec3> unitNormals;
+  weightedNormals.reserve(mesh.triangles.size());
+  unitNormals.reserve(mesh.triangles.size());
   for (const auto& [a, b, c] : mesh.triangles) {
     const Vec3 cross =
         glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
@@ -38,34 +77,28 @@ MeshGeometry withVertexNormals(const MeshGeometry& mesh, float creaseAngleDegree
     unitNormals.push_back(length > 0.0f ? cross / length : Vec3(0.0f));
   }
 
-  int pointCount = 0;
-  const std::vector<int> pointOf = pointIndices(mesh.positions, pointCount);
-  std::vector<std::vector<int>> trianglesAround(pointCount);
-  for (std::size_t triangle = 0; triangle < mesh.triangles.size(); ++triangle)
-    for (int vertex : mesh.triangles[triangle])
-      trianglesAround[pointOf[vertex]].push_back(static_cast<int>(triangle));
+  const std::vector<std::uint32_t> pointOf = weldedIndices(mesh.positions);
+  const std::size_t pointCount =
+      pointOf.empty() ? 0 : *std::max_element(pointOf.begin(), pointOf.end()) + 1;
+  const TrianglesAround around(mesh, pointOf, pointCount);
 
   const float smoothCosine = std::cos(radians(creaseAngleDegrees));
   MeshGeometry smooth;
-  std::map<std::pair<int, PointKey>, int> vertexWithNormal;
+  smooth.triangles.reserve(mesh.triangles.size());
+  VerticesWithNormals vertices(mesh, smooth);
   for (std::size_t triangle = 0; triangle < mesh.triangles.size(); ++triangle) {
     std::array<int, 3> corners;
     for (int corner = 0; corner < 3; ++corner) {
       const int vertex = mesh.triangles[triangle][corner];
+      const std::uint32_t point = pointOf[vertex];
       Vec3 sum(0.0f);
-      for (int neighbour : trianglesAround[pointOf[vertex]])
+      for (int i = around.first[point]; i < around.first[point + 1]; ++i) {
+        const int neighbour = around.triangles[i];
         if (glm::dot(unitNormals[triangle], unitNormals[neighbour]) >= smoothCosine)
           sum += weightedNormals[neighbour];
-      const float length = glm::length(sum);
-      const Vec3 normal = length > 0.0f ? sum / length : unitNormals[triangle];
-      const auto [found, added] = vertexWithNormal.try_emplace(
-          {vertex, keyOf(normal)}, static_cast<int>(smooth.positions.size()));
-      if (added) {
-        smooth.positions.push_back(mesh.positions[vertex]);
-        smooth.normals.push_back(normal);
-        if (!mesh.uvs.empty()) smooth.uvs.push_back(mesh.uvs[vertex]);
       }
-      corners[corner] = found->second;
+      const float length = glm::length(sum);
+      corners[corner] = vertices.of(vertex, length > 0.0f ? sum / length : unitNormals[triangle]);
     }
     smooth.triangles.push_back(corners);
   }

@@ -54,6 +54,27 @@ TEST(VertexNormals, VerticesAtOnePointSmoothTogetherAndKeepTheirTextureCoordinat
   EXPECT_EQ(smooth.uvs[smooth.triangles[1][0]], Vec2(0.25f));
 }
 
+// A fan of four triangles around the origin, each with a copy of the centre
+// of its own, listed out of order, one as -0: the centre's corners all get
+// the area-weighted average of the four normals.
+TEST(VertexNormals, CopiesOfAPointInAnyOrderSmoothTogether) {
+  const std::array<Vec3, 4> rim = {Vec3(1.0f, 0.0f, 0.2f), Vec3(0.0f, 1.0f, -0.1f),
+                                   Vec3(-1.0f, 0.0f, 0.3f), Vec3(0.0f, -1.0f, 0.0f)};
+  MeshGeometry fan;
+  fan.positions.assign(rim.begin(), rim.end());
+  fan.positions.insert(fan.positions.end(),
+                       {Vec3(0.0f), Vec3(-0.0f, 0.0f, 0.0f), Vec3(0.0f), Vec3(0.0f)});
+  Vec3 weighted(0.0f);
+  for (int i = 0; i < 4; ++i) {
+    fan.triangles.push_back({7 - i, i, (i + 1) % 4});
+    weighted += glm::cross(rim[i], rim[(i + 1) % 4]);
+  }
+  const MeshGeometry smooth = withVertexNormals(fan, 80.0f);
+  for (const auto& corners : smooth.triangles)
+    EXPECT_TRUE(nearlyEqual(smooth.normals[corners[0]], glm::normalize(weighted)));
+  EXPECT_EQ(smooth.positions.size(), 8u) << "each vertex once: no crease splits one";
+}
+
 TEST(VertexNormals, ATriangleWithoutAreaGetsNoNormal) {
   const MeshGeometry sliver = withVertexNormals(
       MeshGeometry{

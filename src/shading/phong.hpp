@@ -18,6 +18,7 @@
 #include "core/color.hpp"
 #include "scene/light.hpp"
 #include "scene/material.hpp"
+#include "shading/material_at_point.hpp"
 
 namespace rise {
 

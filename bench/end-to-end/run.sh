@@ -1,0 +1,195 @@
+#!/usr/bin/env bash
+# What a user waits for, against the renderers they would use instead: each
+# row runs RISE and a peer on the same input, in one run of this script, on
+# the same threads, and prints the two times and their ratio.
+#  1. Whitted's ray tracer on the spheres scene (examples/spheres.yaml,
+#     bench/spheres/spheres.pov), 800x600, one sample a pixel and then 16
+#     jittered: the whole `rise render` process (loading, building, tracing,
+#     writing the PNG) against POV-Ray 3.7's whole process less its start-up
+#     (POV-Ray on one empty pixel, timed in the same run).
+#  2. The primary rays of a bumpy sphere of 100,000 triangles (no normals in
+#     the file: RISE computes them) at 1920x1080, in a scene without lights:
+#     RISE's render_seconds (BVH build, trace, shading) against Embree 3's
+#     build and rtcIntersect1 loop (embree_primary.cpp).
+#  3. The z-buffer and the scanline, Gouraud, over 1,000,000 triangles at
+#     1920x1080: RISE's render_seconds against llvmpipe's frame
+#     (bench/raster/osmesa_gouraud.cpp).
+# Each is run --runs times, interleaved, and the best counts: the noise of a
+# shared machine only ever adds time.
+set -euo pipefail
+shopt -s inherit_errexit
+
+usage() {
+  cat <<EOF
+usage: bench/end-to-end/run.sh [--runs N] [--threads N] [--out DIR] [BUILD_DIR]
+  BUILD_DIR     a Release build with link-time optimisation, holding rise and the peers'
+                programs bench/rise_embree_primary_bench and bench/rise_osmesa_bench
+                (default: build-release, made by cmake -B build-release)
+  --runs N      runs of each renderer, the best counting (default: 3)
+  --threads N   threads of every renderer (default: 2)
+  --out DIR     where the meshes, scenes, images, statistics and logs go
+                (default: out/bench-end-to-end)
+EOF
+}
+
+# shellcheck source=bench/common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
+
+runs=3
+threads=2
+out=out/bench-end-to-end
+build="build-release"
+declare -A value_options=([--runs]=runs [--threads]=threads [--out]=out)
+declare -A flag_options=()
+parse_options "$@"
+require_count --runs "$runs" 1
+require_count --threads "$threads" 1
+
+enter_repository
+rise="$build/rise"
+embree="$build/bench/rise_embree_primary_bench"
+osmesa="$build/bench/rise_osmesa_bench"
+[[ -x "$rise" ]] || die "no RISE executable at $rise (cmake -B build-release, or pass BUILD_DIR)"
+[[ -x "$embree" ]] || die "no $embree (scripts/install-deps --bench, then build again)"
+[[ -x "$osmesa" ]] || die "no $osmesa (scripts/install-deps --bench, then build again)"
+command -v povray >/dev/null || die "povray is not installed (scripts/install-deps --bench)"
+grep -q '^CMAKE_INTERPROCEDURAL_OPTIMIZATION:.*=OFF' "$build/CMakeCache.txt" 2>/dev/null &&
+  echo "warning: $build is built without link-time optimisation" >&2
+mkdir -p "$out"
+
+# Runs the command, its output to the log $1; prints its wall-clock seconds.
+wall_seconds() {
+  local log="$1" start end
+  shift
+  start="$(date +%s%N)"
+  "$@" >"$log" 2>&1 || die "$1 failed; see $log"
+  end="$(date +%s%N)"
+  awk -v ns="$((end - start))" 'BEGIN { printf "%.3f\n", ns / 1e9 }'
+}
+
+# Renders with RISE into $out/$1.png; prints "wall render_seconds".
+rise_run() {
+  local name="$1" wall
+  shift
+  wall="$(wall_seconds "$out/$name.log" "$rise" render -o "$out/$name.png" --threads "$threads" \
+    --stats "$out/$name.json" "$@")"
+  echo "$wall $(json_seconds "$out/$name.json" render_seconds)"
+}
+
+# POV-Ray's whole process on the spheres at 800x600 less its start-up; $1
+# names the run, the rest are its anti-aliasing options.
+povray_run() {
+  local name="$1" start_up whole
+  shift
+  local options=(+FN File_Gamma=sRGB +WT"$threads" -D)
+  start_up="$(wall_seconds "$out/povray-start-up.log" povray +Ibench/end-to-end/start-up.pov \
+    +O"$out/povray-start-up.png" "${options[@]}" +W1 +H1 -A)"
+  whole="$(wall_seconds "$out/$name.log" povray +Ibench/spheres/spheres.pov \
+    +O"$out/$name.png" "${options[@]}" +W800 +H600 "$@")"
+  awk -v whole="$whole" -v start_up="$start_up" 'BEGIN { printf "%.3f\n", whole - start_up }'
+}
+
+# The 100,000-triangle mesh without normals and the million-triangle one with
+# them (made once), and the scenes that frame them from the camera of the
+# Embree and OSMesa programs.
+mesh_scene() {
+  local name="$1" lights="$2"
+  cat <<YAML
+image: {width: 1920, height: 1080, background: [0.05, 0.05, 0.1]}
+camera: {position: [0.6, 0.9, -2.6], look_at: [0, 0, 0], up: [0, 1, 0], fov: 45}
+ambient: [0.1, 0.1, 0.1]
+lights: $lights
+materials:
+  clay: {color: [0.8, 0.55, 0.35], ka: 1.0, kd: 0.8, ks: 0.3, n: 20}
+objects:
+  - mesh: {file: $name.ply, material: clay}
+YAML
+}
+[[ -f "$out/sphere-100k.ply" ]] ||
+  python3 bench/raster/make_mesh.py "$out/sphere-100k.ply" --segments 250 --rings 201 \
+    --no-normals >&2
+[[ -f "$out/sphere-1m.ply" ]] || python3 bench/raster/make_mesh.py "$out/sphere-1m.ply" >&2
+mesh_scene sphere-100k "[]" >"$out/primary.yaml"
+mesh_scene sphere-1m "[{point: {position: [-3, 4, -4], color: [1, 1, 1]}}]" >"$out/million.yaml"
+
+rows=(spheres spheres-aa primary z-buffer scanline)
+declare -A rise_times peer_times
+for row in "${rows[@]}"; do
+  rise_times[$row]=""
+  peer_times[$row]=""
+done
+# Appends a run's times (RISE's "wall render_seconds" and the peer's) to a row.
+record() {
+  rise_times[$1]+="$2"$'\n'
+  peer_times[$1]+="$3"$'\n'
+}
+# One run of every row. Each time is taken into a variable first: a failure
+# inside $(...) given as an argument would go unnoticed.
+run_rows() {
+  local rise_time peer_time llvmpipe algorithm
+  rise_time="$(rise_run spheres examples/spheres.yaml --width 800 --height 600)"
+  peer_time="$(povray_run povray-spheres -A)"
+  record spheres "$rise_time" "$peer_time"
+  rise_time="$(rise_run spheres-aa examples/spheres.yaml --width 800 --height 600 \
+    --samples 16 --pattern jittered)"
+  peer_time="$(povray_run povray-spheres-aa +A0.0 +AM1 +R4 +J)"
+  record spheres-aa "$rise_time" "$peer_time"
+  rise_time="$(rise_run primary "$out/primary.yaml")"
+  peer_time="$("$embree" "$out/sphere-100k.ply" 1920 1080 "$threads" 1 \
+    "$out/embree-primary.ppm" | sed -n 's/^best_seconds //p')"
+  record primary "$rise_time" "$peer_time"
+  llvmpipe="$(LP_NUM_THREADS="$threads" "$osmesa" "$out/sphere-1m.ply" 1920 1080 1 \
+    "$out/million-llvmpipe.ppm" | sed -n 's/^best_seconds //p')"
+  for algorithm in z-buffer scanline; do
+    rise_time="$(rise_run "million-$algorithm" "$out/million.yaml" -a "$algorithm" \
+      --shading gouraud --encoding linear)"
+    record "$algorithm" "$rise_time" "$llvmpipe"
+  done
+}
+for ((run = 1; run <= runs; ++run)); do
+  echo "run $run of $runs" >&2
+  run_rows
+done
+
+# The best of a row's runs: RISE's wall time (field 1) or render_seconds (2), the peer's.
+best_rise() { cut -d' ' -f"$2" <<<"${rise_times[$1]}" | grep . | smallest; }
+best_peer() { grep . <<<"${peer_times[$1]}" | smallest | awk '{ printf "%.3f\n", $1 }'; }
+
+declare -A work=(
+  [spheres]="Whitted, 11 spheres + checker plane, 800x600, 1 spp"
+  [spheres-aa]="same, 16 jittered spp"
+  [primary]="primary rays, 100k-triangle mesh, 1920x1080"
+  [z-buffer]="z-buffer, Gouraud, 1M triangles, 1920x1080"
+  [scanline]="scanline, same"
+)
+declare -A peer=(
+  [spheres]="POV-Ray, wall less start-up" [spheres-aa]="POV-Ray +A0.0 +AM1 +R4 +J, same"
+  [primary]="Embree 3 build + rtcIntersect1" [z-buffer]="llvmpipe frame" [scanline]="llvmpipe frame"
+)
+# What the ratio compares, as the issue's table does, and its target.
+declare -A ratio_of=(
+  [spheres]="RISE wall / peer" [spheres-aa]="RISE wall / peer" [primary]="peer / RISE render"
+  [z-buffer]="RISE render / peer" [scanline]="RISE render / peer"
+)
+declare -A target=([spheres]="<= 0.5" [spheres-aa]="<= 0.35" [primary]=">= 0.5"
+  [z-buffer]="<= 1.5" [scanline]="<= 2.0")
+
+echo
+echo "$(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores, $threads threads, best of $runs"
+printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "work" "RISE wall (s)" "RISE render (s)" \
+  "peer" "peer (s)" "ratio" "ratio is" "target"
+echo "|---|---|---|---|---|---|---|---|"
+for row in "${rows[@]}"; do
+  wall="$(best_rise "$row" 1)"
+  render="$(best_rise "$row" 2)"
+  peer_seconds="$(best_peer "$row")"
+  case "$row" in
+    spheres*) value="$(ratio "$wall" "$peer_seconds")" ;;
+    primary) value="$(ratio "$peer_seconds" "$render")" ;;
+    *) value="$(ratio "$render" "$peer_seconds")" ;;
+  esac
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "${work[$row]}" "$wall" "$render" \
+    "${peer[$row]}" "$peer_seconds" "$value" "${ratio_of[$row]}" "${target[$row]}"
+done
+echo
+echo "images: $out/*.png, $out/embree-primary.ppm, $out/million-llvmpipe.ppm"

@@ -1,0 +1,87 @@
+"""Every command and scene file the manual shows runs as it says.
+
+Reads the manifest the manual's build wrote (the blocks of each page in
+reading order) and, page by page, in a fresh folder laid out like the top of
+the repository (`build/rise` the program under test): writes each named
+scene where the page writes it, checks that each scene loads (`rise
+validate`, or fails to with the status the page gives), and runs each block
+of commands, checking the status it ends with.
+
+    commands_test.py --manifest build/manual/manifest-en.json --rise build/rise
+"""
+
+import json
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "_ext"))
+from outcome import parse_options, report  # noqa: E402
+from rise_manual.runner import make_workspace  # noqa: E402
+
+TIMEOUT_SECONDS = 600
+
+
+def run_block(script, folder, stdin=None):
+    return subprocess.run(
+        ["bash", "-o", "pipefail", "-c", script],
+        cwd=folder,
+        input=stdin,
+        capture_output=True,
+        text=True,
+        timeout=TIMEOUT_SECONDS,
+        check=False,
+    )
+
+
+def check_scene(block, folder):
+    if block.get("in_repository"):
+        return run_block(f"build/rise validate {block['file']}", folder), block["file"]
+    if block["file"]:
+        (folder / block["file"]).write_text(block["text"])
+        return run_block(f"build/rise validate {block['file']}", folder), block["file"]
+    return run_block("build/rise validate -", folder, stdin=block["text"]), "an unnamed scene"
+
+
+def check_page(page, blocks, repository, rise, root):
+    folder = root / page.replace("/", "-")
+    make_workspace(repository, rise, folder)
+    failures, passed = [], 0
+    for block in blocks:
+        if block["kind"] == "scene":
+            completed, what = check_scene(block, folder)
+        elif block["kind"] == "command":
+            started = time.monotonic()
+            completed, what = run_block(block["script"], folder), block["script"]
+            print(f"  {page}:{block['line']}: {time.monotonic() - started:.1f} s")
+        else:
+            continue
+        if completed.returncode == block["status"]:
+            passed += 1
+            continue
+        failures.append(
+            f"{page}.rst:{block['line']}: {what!r} exited with status {completed.returncode}, "
+            f"the manual says {block['status']}:\n{completed.stdout}{completed.stderr}"
+        )
+    return passed, failures
+
+
+def main():
+    options = parse_options(__doc__, "manifest", "rise")
+    manifest = json.loads(Path(options.manifest).read_text())
+    repository = Path(manifest["repository"])
+    rise = Path(options.rise).resolve()
+
+    passed, failures = 0, []
+    with tempfile.TemporaryDirectory(prefix="rise-manual-commands-") as root:
+        for page, blocks in manifest["pages"].items():
+            page_passed, page_failures = check_page(page, blocks, repository, rise, Path(root))
+            passed += page_passed
+            failures += page_failures
+    return report(passed, failures)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,73 @@
+#include "reports/ray_tree_text.hpp"
+
+#include <iomanip>
+#include <sstream>
+#include <string>
+
+#include "reports/step_json.hpp"
+
+namespace rise {
+namespace {
+
+std::string numbers(std::initializer_list<float> values) {
+  std::ostringstream out;
+  out << std::setprecision(4) << "(";
+  const char* separator = "";
+  for (float value : values) {
+    out << separator << value;
+    separator = ", ";
+  }
+  out << ")";
+  return out.str();
+}
+
+std::string text(const Vec2& v) { return numbers({v.x, v.y}); }
+std::string text(const Vec3& v) { return numbers({v.x, v.y, v.z}); }
+
+void printRay(std::ostream& out, const Scene& scene, const RayTree& tree, int index,
+              const std::string& indent) {
+  const RayNode& ray = tree.rays[static_cast<std::size_t>(index)];
+  out << indent << toString(ray.kind) << " ray from " << text(ray.origin) << " along "
+      << text(ray.direction);
+  if (ray.kind == RayKind::Shadow) {
+    out << " to light " << ray.light << " (" << ray.distance << " away): "
+        << (ray.transmittance == Color(0.0f)   ? "blocked"
+            : ray.transmittance == Color(1.0f) ? "reaches it"
+                                               : "filtered to " + text(ray.transmittance))
+        << "\n"
+        << indent << "  diffuse " << text(ray.diffuse) << ", specular " << text(ray.specular)
+        << "; adds " << text(ray.contribution) << "\n";
+    return;
+  }
+  out << ", weight " << text(ray.weight) << "\n";
+  if (!ray.hit) {
+    out << indent << "  hits nothing: background " << text(ray.color) << "; adds "
+        << text(ray.contribution) << "\n";
+    return;
+  }
+  out << indent << "  hits " << objectName(scene, ray.object) << " at " << text(ray.point) << ", "
+      << ray.distance << " away, normal " << text(ray.normal) << ", uv " << text(ray.uv) << "\n"
+      << indent << "  ambient " << text(ray.ambient) << "; adds " << text(ray.contribution)
+      << "; brings back " << text(ray.color) << "\n";
+  for (int child : ray.children) printRay(out, scene, tree, child, indent + "  ");
+}
+
+}  // namespace
+
+void printRayTrees(std::ostream& out, const Scene& scene, const std::vector<RayTree>& trees,
+                   const Color& pixelColor) {
+  if (trees.empty()) return;
+  out << "pixel " << trees[0].pixel.x << "," << trees[0].pixel.y << ": " << text(pixelColor)
+      << " from " << trees.size() << (trees.size() == 1 ? " sample\n" : " samples\n");
+  for (const RayTree& tree : trees) {
+    out << "sample " << tree.sample << " at " << text(tree.raster) << ": " << text(tree.color);
+    if (tree.dimensions)
+      out << " (lens " << text(tree.dimensions->lens) << ", time " << tree.dimensions->time
+          << ", light " << text(tree.dimensions->light) << ", gloss "
+          << text(tree.dimensions->gloss) << ")";
+    out << "\n";
+    printRay(out, scene, tree, 0, "  ");
+  }
+}
+
+}  // namespace rise
