@@ -17,6 +17,7 @@
 #include "look_inside.hpp"
 #include "progress_bar.hpp"
 #include "render/buffer_images.hpp"
+#include "run.hpp"
 #include "settings_options.hpp"
 #include "stats_report.hpp"
 
@@ -276,5 +277,3 @@ int run(int argc, char** argv) {
 }
 
 }  // namespace rise::cli
-
-int main(int argc, char** argv) { return rise::cli::run(argc, argv); }
