@@ -97,10 +97,11 @@ TEST_F(RiseCommand, AnUnknownAlgorithmIsBadInput) {
   EXPECT_NE(result.output.find("teleport"), std::string::npos) << result.output;
 }
 
-TEST_F(RiseCommand, AnUnwritableOutputExitsWithStatusOne) {
+// An output that cannot be written is found before the render, as bad input.
+TEST_F(RiseCommand, AnOutputInAMissingFolderIsBadInput) {
   const CommandResult result = runRise("render " + example("classic.yaml") + " --width 8 -o " +
                                        file("no/such/folder/x.png").string());
-  EXPECT_EQ(result.status, 1);
+  EXPECT_EQ(result.status, 2);
   EXPECT_NE(result.output.find("x.png"), std::string::npos) << result.output;
 }
 
@@ -229,6 +230,26 @@ TEST_F(RiseCommand, ChoosesTheAccelerationStructure) {
   EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.output.find("octree"), std::string::npos) << unknown.output;
   EXPECT_FALSE(fs::exists(file("octree.png")));
+}
+
+// A Quake II skin whose palette lacks its marker byte is worn, and said.
+TEST_F(RiseCommand, PrintsTheWarningsOfFilesReadWithAFix) {
+  const fs::path sydney = fs::path(RISE_SOURCE_DIR) / "examples/models/sydney";
+  std::ifstream original(sydney / "sydney.pcx", std::ios::binary);
+  std::string skin{std::istreambuf_iterator<char>(original), {}};
+  skin.erase(skin.size() - 769, 1);
+  std::ofstream(file("sydney.pcx"), std::ios::binary) << skin;
+  fs::copy_file(sydney / "sydney.md2", file("sydney.md2"));
+  std::ofstream(file("skin.yaml")) << "camera: {position: [0, 0, -5], look_at: [0, 0, 0]}\n"
+                                      "materials: {skin: {}}\n"
+                                      "objects: [mesh: {file: sydney.md2, material: skin}]\n";
+  const CommandResult result = runRise("validate " + file("skin.yaml").string());
+  EXPECT_EQ(result.status, 0) << result.output;
+  EXPECT_NE(result.output.find(file("skin.yaml").string() +
+                               ":3:24: warning: " + file("sydney.pcx").string() +
+                               ": the 8-bit PCX image's palette lacks its 0x0C marker byte"),
+            std::string::npos)
+      << result.output;
 }
 
 // Without Embree at build time, asking for it is bad input that says what

@@ -207,7 +207,7 @@ TEST(AntiAliasing, AdaptiveRefinesOnlyWhereCornersDiffer) {
   const double refined = edge.stats.value("adaptive_refined_pixels");
   EXPECT_GT(refined, 20);           // about one pixel a row along the edge
   EXPECT_LT(refined, 32 * 32 / 5);  // and nothing away from it
-  const RenderResult empty = render(flatScene("", "[]\n", 16, 16), "ray-tracing", adaptive);
+  const RenderResult empty = render(flatScene("", "  []\n", 16, 16), "ray-tracing", adaptive);
   EXPECT_EQ(empty.stats.value("adaptive_refined_pixels"), 0);
 }
 

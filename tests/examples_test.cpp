@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "algorithms/registry.hpp"
@@ -25,6 +27,13 @@ using namespace raster_testing;
 
 constexpr int kWidth = 64;
 constexpr int kHeight = 48;
+// The slowest example at its own size takes some 4 s; a build with
+// sanitizers, several times that.
+#ifdef RISE_SANITIZED_BUILD
+constexpr double kSecondsARenderTakes = 120.0;
+#else
+constexpr double kSecondsARenderTakes = 20.0;
+#endif
 
 int finitePixels(const Image& image) {
   int finite = 0;
@@ -65,6 +74,30 @@ TEST_P(ExampleScene, RendersWithEveryAlgorithm) {
     EXPECT_EQ(finitePixels(result.image), kWidth * kHeight) << renderer->name();
     EXPECT_GT(pixelsOtherThan(result.image, scene.image.background), kWidth * kHeight / 10)
         << renderer->name();
+  }
+}
+
+// Its own size and others, wide, tall and tiny: a scene that one algorithm
+// orders in a second at one size must not take it minutes at another (depth
+// sort's splits once never settled at some sizes). One sample a pixel, as
+// the examples' many samples only repeat the same work.
+TEST_P(ExampleScene, RendersWithEveryAlgorithmAtEverySizeInSeconds) {
+  const Scene scene = load(GetParam());
+  const std::vector<std::pair<int, int>> sizes{
+      {scene.image.width, scene.image.height}, {160, 120}, {257, 31}, {29, 191}, {7, 5}};
+  for (const auto& [width, height] : sizes) {
+    RenderRequest request;
+    request.image = {width, height, 1, SamplePattern::None, FilterKind::Box, {}};
+    const RenderSettings settings = settingsFor(scene, request);
+    for (const Renderer* renderer : allRenderers()) {
+      const auto start = std::chrono::steady_clock::now();
+      const RenderResult result = render(renderer->name(), scene, settings);
+      const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+      const std::string label = std::string(renderer->name()) + " at " + std::to_string(width) +
+                                " x " + std::to_string(height);
+      EXPECT_EQ(finitePixels(result.image), width * height) << label;
+      EXPECT_LT(seconds.count(), kSecondsARenderTakes) << label;
+    }
   }
 }
 

@@ -298,6 +298,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"look_at_position.yaml",
                  "look_at_position.yaml:4:12: 'look_at' in camera is the same point as "
                  "'position'; expected a point for the camera to look towards"},
+        BadScene{"far_camera.yaml",
+                 "far_camera.yaml:2:44: 'look_at' in camera is 1e30 units from 'position'; "
+                 "expected a camera at most 1e15 units from the point it looks at"},
+        BadScene{"absurd_ior.yaml",
+                 "absurd_ior.yaml:4:77: 'ior' in material 'glass' is 1e30; expected a number "
+                 "from 0.1 to 10"},
         BadScene{"fov_out_of_range.yaml",
                  "fov_out_of_range.yaml:2:57: 'fov' in camera is 180; expected an angle in "
                  "degrees > 0 and < 180"},
@@ -349,6 +355,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"tab_indentation.yaml",
                  "tab_indentation.yaml:3:10: invalid YAML: unexpected ':' (wrong indentation, a "
                  "tab, or a value with ': ' that needs quotes?)"},
+        BadScene{"leading_comma.yaml",
+                 "leading_comma.yaml:2:1: invalid YAML: unexpected ','; expected a value (quote "
+                 "text that starts with it)"},
+        BadScene{"deep_nesting.yaml",
+                 "deep_nesting.yaml:3:73: lists and maps nested more than 64 deep; a scene needs "
+                 "only a few levels"},
         BadScene{"not_a_map.yaml",
                  "not_a_map.yaml:2:1: the scene is a list of 2 items; expected a map with the "
                  "keys image, camera, ambient, lights, materials, objects, animation"},

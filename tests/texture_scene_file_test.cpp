@@ -7,6 +7,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "io/image_io.hpp"
@@ -205,6 +206,30 @@ TEST_F(TextureSceneFile, DressesAnUntexturedMd2ModelInItsSkin) {
   const Image skin = readImage(kSydney / "sydney.pcx");
   SurfacePoint top(Vec3(0.0f), Vec3(0, 1, 0), Vec2((154.0f + 0.5f) / 308.0f, 1.0f - 0.5f / 193.0f));
   expectColor(surfaceColors(scene.materials[2], top).color, skin.at(154, 0));
+}
+
+TEST_F(TextureSceneFile, WearsASkinWithoutItsPaletteMarkerAndWarns) {
+  // Sydney's skin with the 0x0C byte before its palette taken out, as some
+  // Quake II skins were written.
+  std::ifstream original(kSydney / "sydney.pcx", std::ios::binary);
+  std::string skin{std::istreambuf_iterator<char>(original), {}};
+  skin.erase(skin.size() - 769, 1);
+  std::ofstream(directory_ / "sydney.pcx", std::ios::binary) << skin;
+  std::filesystem::copy_file(kSydney / "sydney.md2", directory_ / "sydney.md2");
+  const std::filesystem::path path = directory_ / "scene.yaml";
+  std::ofstream(path) << "camera: {position: [0, 0, -5], look_at: [0, 0, 0]}\n"
+                         "materials: {skin: {}}\n"
+                         "objects:\n"
+                         "  - mesh: {file: sydney.md2, material: skin}\n";
+  const Scene scene = loadSceneFile(path);
+  EXPECT_EQ(scene.warnings,
+            std::vector<std::string>{
+                path.string() + ":4:18: warning: " + (directory_ / "sydney.pcx").string() +
+                ": the 8-bit PCX image's palette lacks its 0x0C marker byte; read the last 768 "
+                "bytes as the palette"});
+  const Image worn = readImage(directory_ / "sydney.pcx");
+  const Image intact = readImage(kSydney / "sydney.pcx");
+  EXPECT_EQ(worn.pixels(), intact.pixels());
 }
 
 }  // namespace

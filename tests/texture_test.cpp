@@ -133,6 +133,40 @@ TEST(PcxFile, DecodesRunsAndThePalette) {
   expectColor(image.at(2, 0), Color(0, 0, 1));
 }
 
+TEST(PcxFile, ReadsAPaletteWithoutItsMarkerAndWarns) {
+  std::vector<std::uint8_t> bytes = pcxHeader(3, 1, 1);
+  for (std::uint8_t byte : {0xC2, 0x01, 0x02, 0x00}) bytes.push_back(byte);
+  std::vector<std::uint8_t> palette(768, 0);
+  palette[3] = 255;  // index 1: red
+  bytes.insert(bytes.end(), palette.begin(), palette.end());
+  std::vector<std::string> warnings;
+  const Image image = decodePcx(bytes, "skin.pcx", Encoding::Srgb, &warnings);
+  expectColor(image.at(0, 0), Color(1, 0, 0));
+  EXPECT_EQ(warnings, std::vector<std::string>{
+                          "skin.pcx: the 8-bit PCX image's palette lacks its 0x0C marker byte; "
+                          "read the last 768 bytes as the palette"});
+  bytes.resize(bytes.size() - 2);  // now the palette is not there in full
+  EXPECT_THROW(decodePcx(bytes, "skin.pcx"), ImageFileError);
+}
+
+TEST(PcxFile, RefusesAHeaderOfMoreThanTheFileCanHold) {
+  std::vector<std::uint8_t> bytes = pcxHeader(200, 200, 3);
+  bytes.resize(200);
+  EXPECT_THROW(decodePcx(bytes, "short.pcx"), ImageFileError);
+  bytes = pcxHeader(200, 200, 1);
+  bytes[66] = 0xff;  // lines of 65535 bytes for 200 pixels
+  bytes[67] = 0xff;
+  bytes.resize(128 + 769, 0x0C);
+  try {
+    decodePcx(bytes, "wide.pcx");
+    FAIL() << "no error";
+  } catch (const ImageFileError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "wide.pcx: the PCX header is corrupt: its image is 200 x 200 with lines of 65535 "
+              "bytes");
+  }
+}
+
 TEST(PcxFile, ReportsAnImageCutShort) {
   std::vector<std::uint8_t> bytes = pcxHeader(4, 4, 3);
   bytes.push_back(0x05);

@@ -115,8 +115,9 @@ int renderFrames(const Renderer& renderer, Job& job, const AnimationOptions& opt
   const Camera camera = job.scene.camera;
   for (int frame : frames) {
     job.scene.camera = cameraForFrame(camera, frame, job.scene.animationFrames);
-    if (const int status = write(renderWithProgress(renderer, job), framePath(pattern, frame)))
-      return status;
+    const std::optional<RenderResult> rendered = renderWithProgress(renderer, job);
+    if (!rendered) return kExitBadInput;
+    if (const int status = write(*rendered, framePath(pattern, frame))) return status;
   }
   if (options.video.empty()) return 0;
   return writeVideo(pattern, frames, options.video);

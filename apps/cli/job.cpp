@@ -5,27 +5,44 @@
 #include "algorithms/registry.hpp"
 #include "io/scene_error.hpp"
 #include "progress_bar.hpp"
+#include "render/render_limits.hpp"
 
 namespace rise::cli {
 
-std::variant<Job, int> prepare(const SettingsOptions& options) {
+std::variant<Job, int> prepare(const SettingsOptions& options,
+                               const std::vector<Family>& families) {
   Job job;
   try {
     job.scene = loadScene(options.scenePath);
+    for (const std::string& warning : job.scene.warnings) std::cerr << warning << "\n";
     job.settings = settingsFor(job.scene, options.request);
+    for (Family family : families) checkRenderFits(job.scene, job.settings, family);
   } catch (const SceneError& error) {
     std::cerr << error.what() << "\n";
     return kExitBadInput;
-  } catch (const SettingsError& error) {
+  } catch (const std::runtime_error& error) {  // SettingsError, RenderLimitError
     std::cerr << "rise: " << error.what() << "\n";
     return kExitBadInput;
   }
   return job;
 }
 
-RenderResult renderWithProgress(const Renderer& renderer, const Job& job, StepRecorder* steps) {
-  ProgressBar progress(std::string(renderer.name()), steps);
-  return renderTimed(renderer, job.scene, job.settings, progress);
+bool outputsAreWritable(const std::vector<PlannedOutput>& outputs, const std::string& scenePath,
+                        bool foldersAreMade) {
+  const std::string problem = outputsProblem(outputs, scenePath, foldersAreMade);
+  if (!problem.empty()) std::cerr << "rise: " << problem << "\n";
+  return problem.empty();
+}
+
+std::optional<RenderResult> renderWithProgress(const Renderer& renderer, const Job& job,
+                                               StepRecorder* steps) {
+  try {
+    ProgressBar progress(std::string(renderer.name()), steps);
+    return renderTimed(renderer, job.scene, job.settings, progress);
+  } catch (const RenderLimitError& error) {  // the bar is erased by now
+    std::cerr << "rise: " << error.what() << "\n";
+    return std::nullopt;
+  }
 }
 
 RenderDescription describe(const Job& job, std::string_view algorithm) {

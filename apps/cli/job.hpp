@@ -4,10 +4,12 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
 
+#include "output_check.hpp"
 #include "render/renderer.hpp"
 #include "settings_options.hpp"
 #include "stats_report.hpp"
@@ -31,12 +33,18 @@ struct Job {
 };
 
 // The job the options ask for, or the exit status of the message already
-// printed about them.
-std::variant<Job, int> prepare(const SettingsOptions& options);
+// printed about them: refused when a render by an algorithm of one of these
+// families would exceed its limits (render/render_limits.hpp).
+std::variant<Job, int> prepare(const SettingsOptions& options, const std::vector<Family>& families);
 
-// Renders with a progress bar, and the steps recorded in `steps` when given.
-RenderResult renderWithProgress(const Renderer& renderer, const Job& job,
-                                StepRecorder* steps = nullptr);
+// Says what is wrong with the files a command will write, before it renders.
+bool outputsAreWritable(const std::vector<PlannedOutput>& outputs, const std::string& scenePath,
+                        bool foldersAreMade = false);
+
+// Renders with a progress bar, and the steps recorded in `steps` when given;
+// nothing when the render would exceed a limit of its work (said).
+std::optional<RenderResult> renderWithProgress(const Renderer& renderer, const Job& job,
+                                               StepRecorder* steps = nullptr);
 
 RenderDescription describe(const Job& job, std::string_view algorithm);
 

@@ -47,7 +47,12 @@ std::optional<PixelRect> regionOf(const std::vector<int>& values, const RenderSe
 
 int explain(const ExplainOptions& options) {
   const Renderer& renderer = *findRenderer(options.algorithm);
-  std::variant<Job, int> prepared = prepare(options.settings);
+  const std::filesystem::path directory =
+      options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
+  if (!outputsAreWritable({{directory / "index.html", "-o " + directory.string()}},
+                          options.settings.scenePath, true))
+    return kExitBadInput;
+  std::variant<Job, int> prepared = prepare(options.settings, {renderer.description().family});
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   const Job& job = std::get<Job>(prepared);
   StepBudget budget;
@@ -59,9 +64,9 @@ int explain(const ExplainOptions& options) {
     return kExitBadInput;
   }
   StepRecorder recorder(budget);
-  const RenderResult result = renderWithProgress(renderer, job, &recorder);
-  const std::filesystem::path directory =
-      options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
+  const std::optional<RenderResult> rendered = renderWithProgress(renderer, job, &recorder);
+  if (!rendered) return kExitBadInput;
+  const RenderResult& result = *rendered;
   try {
     writeStepPlayer(
         directory, {job.scene, renderer.description(), result, recorder, options.framesWithShapes});
@@ -87,7 +92,11 @@ int inspect(const InspectOptions& options) {
               << ": expected a file name ending in .svg\n";
     return kExitBadInput;
   }
-  std::variant<Job, int> prepared = prepare(options.settings);
+  std::vector<PlannedOutput> outputs;
+  if (!options.json.empty()) outputs.push_back({options.json, "-o"});
+  if (!options.picture.empty()) outputs.push_back({options.picture, "--picture"});
+  if (!outputsAreWritable(outputs, options.settings.scenePath)) return kExitBadInput;
+  std::variant<Job, int> prepared = prepare(options.settings, {renderer.description().family});
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   Job& job = std::get<Job>(prepared);
   const glm::ivec2 pixel(options.pixel[0], options.pixel[1]);
@@ -101,7 +110,9 @@ int inspect(const InspectOptions& options) {
   StepBudget budget;
   budget.treePixel = pixel;
   StepRecorder recorder(budget);
-  const RenderResult result = renderWithProgress(renderer, job, &recorder);
+  const std::optional<RenderResult> rendered = renderWithProgress(renderer, job, &recorder);
+  if (!rendered) return kExitBadInput;
+  const RenderResult& result = *rendered;
   const std::vector<RayTree> trees = recorder.trees();
   const Color color = result.image.at(pixel.x, pixel.y);
   if (trees.empty()) {

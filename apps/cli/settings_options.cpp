@@ -1,9 +1,13 @@
 #include "settings_options.hpp"
 
+#include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <iostream>
-#include <iterator>
+#include <limits>
 
 #include "io/scene_file.hpp"
+#include "render/render_limits.hpp"
 
 namespace rise::cli {
 namespace {
@@ -11,6 +15,37 @@ namespace {
 template <typename Enum>
 CLI::CheckedTransformer choices(std::map<std::string, Enum> names) {
   return CLI::CheckedTransformer(std::move(names), CLI::ignore_case);
+}
+
+// The value's text and what was expected of it, as CLI11 shows it after the
+// option's name: "--width: 0; expected a whole number from 1 to 32768".
+template <typename Number>
+CLI::Validator wholeNumberFrom(Number least, Number most) {
+  const std::string expected =
+      "expected a whole number from " + std::to_string(least) + " to " + std::to_string(most);
+  return CLI::Validator(
+      [=](const std::string& text) -> std::string {
+        Number value{};
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error == std::errc() && end == text.data() + text.size() && value >= least &&
+            value <= most)
+          return {};
+        return text + "; " + expected;
+      },
+      "in [" + std::to_string(least) + ", " + std::to_string(most) + "]");
+}
+
+CLI::Validator finitePositiveNumber() {
+  return CLI::Validator(
+      [](const std::string& text) -> std::string {
+        double value = 0.0;
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (error == std::errc() && end == text.data() + text.size() && std::isfinite(value) &&
+            value > 0.0)
+          return {};
+        return text + "; expected a finite number > 0";
+      },
+      "> 0");
 }
 
 std::map<std::string, Accel> accelNames() {
@@ -48,20 +83,20 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
   command.add_option("scene", options.scenePath, "Scene file (YAML or JSON), or - to read stdin")
       ->required();
   command.add_option("--width", image.width, "Image width in pixels (default: the scene's)")
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumberFrom(1, kLargestImageSide));
   command.add_option("--height", image.height, "Image height in pixels (default: the scene's)")
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumberFrom(1, kLargestImageSide));
   command.add_option("--threads", settings.threads, "Worker threads (default: one per core)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wholeNumberFrom(0, kMostThreads));
   command
       .add_option("--max-depth", settings.maxDepth,
                   "Longest ray path of the ray tracers; the primary ray is 1")
       ->capture_default_str()
-      ->check(CLI::Range(1, 64));
+      ->check(wholeNumberFrom(1, 64));
   command
       .add_option("--samples", image.samples,
                   "Samples a pixel (default: the scene's, or 1); alone, picks jittered")
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumberFrom(1, kMostSamples));
   command
       .add_option("--pattern", image.pattern,
                   "Where the samples go: none, regular, jittered, random or adaptive")
@@ -77,9 +112,11 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
   command
       .add_option("--threshold", image.adaptiveThreshold,
                   "Adaptive pattern: the corner difference that is refined (default 0.05)")
-      ->check(CLI::PositiveNumber);
-  command.add_option("--seed", settings.seed,
-                     "Seed of the random samples: the same seed, the same image");
+      ->check(finitePositiveNumber());
+  command
+      .add_option("--seed", settings.seed,
+                  "Seed of the random samples: the same seed, the same image")
+      ->check(wholeNumberFrom<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()));
   command
       .add_option("--accel", settings.accel,
                   "Acceleration structure: none, spheres, bvh (default) or embree")
@@ -95,12 +132,12 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
       .add_option("--tessellation", settings.tessellation,
                   "Visible-surface algorithms: a circle becomes 4 x N segments")
       ->capture_default_str()
-      ->check(CLI::Range(1, 256));
+      ->check(wholeNumberFrom(1, 256));
   command
       .add_option("--plane-size", settings.planeSize,
                   "Visible-surface algorithms: the side of the square drawn for a plane")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(finitePositiveNumber());
   addShadowOptions(command, settings);
 }
 
@@ -112,8 +149,7 @@ CLI::CheckedTransformer encodings() {
 
 Scene loadScene(const std::string& path) {
   if (path != "-") return loadSceneFile(path);
-  const std::string text{std::istreambuf_iterator<char>(std::cin), {}};
-  return rise::loadScene(text, "<stdin>");
+  return loadSceneStream(std::cin, "<stdin>");
 }
 
 }  // namespace rise::cli

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
+
+#include "io/atomic_file.hpp"
 
 namespace rise::cli {
 namespace {
@@ -40,10 +40,7 @@ void writeStatsJson(const std::filesystem::path& path, const RenderDescription& 
                                  {"threads", render.threads}};
   for (const auto& [name, value] : stats.entries()) json[name] = value;
 
-  std::ofstream file(path);
-  file << json.dump(2) << "\n";
-  if (!file)
-    throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
+  writeFileAtomically(path, json.dump(2) + "\n");
 }
 
 }  // namespace rise::cli

@@ -21,7 +21,8 @@ struct RenderDescription {
 void printStats(std::ostream& out, const RenderDescription& render, const Stats& stats);
 
 // The same as one flat JSON object: the description's fields, then every
-// statistic by name. Throws std::runtime_error when the file cannot be written.
+// statistic by name, whole or not at all. Throws OutputFileError when the
+// file cannot be written.
 void writeStatsJson(const std::filesystem::path& path, const RenderDescription& render,
                     const Stats& stats);
 

@@ -156,7 +156,8 @@ class Coordinator {
 
 int coordinate(const DistributedRenderOptions& options, int ranks) {
   const auto start = std::chrono::steady_clock::now();
-  std::variant<cli::Job, int> prepared = cli::prepare(options.settings);
+  std::variant<cli::Job, int> prepared =
+      cli::prepare(options.settings, {findRenderer(options.algorithm)->description().family});
   std::vector<WorkItem> items;
   int status = 0;
   if (const int* failed = std::get_if<int>(&prepared)) {
@@ -195,7 +196,8 @@ int coordinate(const DistributedRenderOptions& options, int ranks) {
 }
 
 int work(const DistributedRenderOptions& options) {
-  std::variant<cli::Job, int> prepared = cli::prepare(options.settings);
+  std::variant<cli::Job, int> prepared =
+      cli::prepare(options.settings, {findRenderer(options.algorithm)->description().family});
   if (const int* failed = std::get_if<int>(&prepared)) {
     sendStatus(kFailed, *failed);
     return *failed;

@@ -45,6 +45,10 @@ RenderSettings settingsFor(const Scene& scene, const RenderRequest& request) {
                         "built); available: " +
                         availableAccelNames());
   std::tie(settings.width, settings.height) = imageSize(request.image, scene.image);
+  if (settings.width > kLargestImageSide || settings.height > kLargestImageSide)
+    throw SettingsError("an image of " + std::to_string(settings.width) + " x " +
+                        std::to_string(settings.height) + " pixels; expected at most " +
+                        std::to_string(kLargestImageSide) + " pixels a side (--width, --height)");
   settings.sampling = pixelSampling(request.image, scene.image.sampling);
   if (std::string problem = samplingProblem(settings.sampling); !problem.empty())
     throw SettingsError(problem);

@@ -28,6 +28,11 @@ inline Vec3 normalizedOrZero(const Vec3& v) {
   return length > 0.0f ? v / length : Vec3(0.0f);
 }
 
+// Whether no component is NaN or infinite.
+inline bool isFinite(const Vec3& v) {
+  return glm::all(glm::lessThan(glm::abs(v), Vec3(kInfinity)));
+}
+
 inline float maxComponent(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
 
 // The axis (0, 1 or 2) of the largest component, the first of equals.

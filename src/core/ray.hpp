@@ -16,4 +16,9 @@ struct Ray {
   Vec3 at(float t) const { return origin + t * direction; }
 };
 
+// A ray with a NaN or an infinite component goes nowhere: it meets nothing,
+// and the acceleration structures must not be handed it (their box tests
+// would take it to meet every box).
+inline bool isFinite(const Ray& ray) { return isFinite(ray.origin) && isFinite(ray.direction); }
+
 }  // namespace rise

@@ -18,20 +18,28 @@ float cellPosition(int cell, float offset, int cells) {
 
 std::string_view toString(SamplePattern pattern) {
   switch (pattern) {
-    case SamplePattern::None: return "none";
-    case SamplePattern::Regular: return "regular";
-    case SamplePattern::Jittered: return "jittered";
-    case SamplePattern::Random: return "random";
-    case SamplePattern::Adaptive: return "adaptive";
+    case SamplePattern::None:
+      return "none";
+    case SamplePattern::Regular:
+      return "regular";
+    case SamplePattern::Jittered:
+      return "jittered";
+    case SamplePattern::Random:
+      return "random";
+    case SamplePattern::Adaptive:
+      return "adaptive";
   }
   return "?";
 }
 
 std::string_view toString(FilterKind filter) {
   switch (filter) {
-    case FilterKind::Box: return "box";
-    case FilterKind::Tent: return "tent";
-    case FilterKind::Gaussian: return "gaussian";
+    case FilterKind::Box:
+      return "box";
+    case FilterKind::Tent:
+      return "tent";
+    case FilterKind::Gaussian:
+      return "gaussian";
   }
   return "?";
 }
@@ -63,8 +71,9 @@ bool isPowerOfFour(int n) {
 }  // namespace
 
 std::string samplingProblem(const PixelSampling& sampling) {
-  if (sampling.samples < 1)
-    return std::to_string(sampling.samples) + " samples; expected 1 or more samples a pixel";
+  if (sampling.samples < 1 || sampling.samples > kMostSamples)
+    return std::to_string(sampling.samples) + " samples; expected 1 to " +
+           std::to_string(kMostSamples) + " samples a pixel";
   if (sampling.pattern == SamplePattern::None && sampling.samples > 1)
     return std::to_string(sampling.samples) +
            " samples with the pattern 'none', which takes one sample at the pixel's centre; "
@@ -104,7 +113,8 @@ void samplePositions(SamplePattern pattern, int n, Rng& rng, std::vector<Vec2>& 
       for (int column = 0; column < grid.columns; ++column) {
         const float u = jitter ? rng.uniform() : 0.5f;
         const float v = jitter ? rng.uniform() : 0.5f;
-        positions.emplace_back(cellPosition(column, u, grid.columns), cellPosition(row, v, grid.rows));
+        positions.emplace_back(cellPosition(column, u, grid.columns),
+                               cellPosition(row, v, grid.rows));
       }
     }
   }

@@ -58,6 +58,9 @@ struct PixelSampling {
 PixelSampling chooseSampling(PixelSampling base, std::optional<int> samples,
                              std::optional<SamplePattern> pattern);
 
+// The most samples a pixel takes: a grid of 256 x 256.
+inline constexpr int kMostSamples = 65536;
+
 // What is wrong with a sampling, for a message ("... ; expected ..."), or an
 // empty string when it can be rendered.
 std::string samplingProblem(const PixelSampling& sampling);

@@ -110,6 +110,7 @@ class HybridPass {
         settings_(settings),
         pass_(pass),
         recording_(recording),
+        observer_(observer),
         workers_(settings.threads, observer),
         view_(context.scene.camera, settings.width, settings.height),
         projection_(view_, pass.pixelOffset, pass.lens),
@@ -132,6 +133,7 @@ class HybridPass {
         [&](const PixelRect& band, int task, const HybridCounters& bandCounters) {
           if (recording_.steps)
             recording_.steps->record(raysStep(band, bandCounters), settings_.height + task);
+          observer_.onPixelsDone(band, images.image);
         });
     counters.raySeconds += secondsSince(start);
 
@@ -367,6 +369,7 @@ class HybridPass {
   const RenderSettings& settings_;
   const AccumulationPass& pass_;
   const PassRecording recording_;
+  RenderObserver& observer_;
   const Workers workers_;
   const ViewFrame view_;
   const ViewProjection projection_;

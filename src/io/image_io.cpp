@@ -1,6 +1,5 @@
-// Writing and reading image files. Every write goes to a temporary file in the
-// target's directory and is renamed over the target only when complete, so a
-// viewer or a later run never sees half an image.
+// Writing and reading image files. Every write goes through an AtomicFile, so
+// a viewer or a later run never sees half an image.
 #include "io/image_io.hpp"
 
 #include <ImfChannelList.h>
@@ -14,7 +13,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -22,11 +20,14 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "io/atomic_file.hpp"
 #include "io/byte_encoding.hpp"
+#include "io/file_limits.hpp"
 #include "io/pcx_file.hpp"
 
 namespace rise {
@@ -50,66 +51,6 @@ ImageFileError fileError(const std::filesystem::path& path, std::string_view pro
 std::string because(std::string_view problem, std::string_view reason) {
   return std::string(problem) + " (" + std::string(reason) + ")";
 }
-
-// A file that appears under its final name only once it is complete. It is
-// written under a name unique to this process and call, in the target's own
-// directory so that the final rename stays on one file system and is atomic.
-// Destroyed without commit(), it deletes itself.
-class TemporaryFile {
- public:
-  explicit TemporaryFile(std::filesystem::path target)
-      : target_(std::move(target)), temporary_(uniqueNameBeside(target_)) {
-    file_ = std::fopen(temporary_.c_str(), "wb");
-    if (file_ == nullptr) throw fileError(target_, because("cannot write", std::strerror(errno)));
-  }
-
-  ~TemporaryFile() {
-    if (file_ != nullptr) std::fclose(file_);
-    if (!committed_) {
-      std::error_code ignored;
-      std::filesystem::remove(temporary_, ignored);
-    }
-  }
-
-  TemporaryFile(const TemporaryFile&) = delete;
-  TemporaryFile& operator=(const TemporaryFile&) = delete;
-
-  // Failures are remembered and reported by commit() rather than thrown:
-  // OpenEXR writes its final offsets from a destructor, which cannot throw.
-  void write(const void* data, std::size_t size) {
-    if (error_ == 0 && std::fwrite(data, 1, size, file_) != size) error_ = errno;
-  }
-
-  std::uint64_t position() const { return static_cast<std::uint64_t>(ftello(file_)); }
-
-  void seek(std::uint64_t position) {
-    if (error_ == 0 && fseeko(file_, static_cast<off_t>(position), SEEK_SET) != 0) error_ = errno;
-  }
-
-  void commit() {
-    if (std::fclose(file_) != 0 && error_ == 0) error_ = errno;
-    file_ = nullptr;
-    if (error_ != 0) throw fileError(target_, because("cannot write", std::strerror(error_)));
-    std::error_code renameError;
-    std::filesystem::rename(temporary_, target_, renameError);
-    if (renameError) throw fileError(target_, because("cannot write", renameError.message()));
-    committed_ = true;
-  }
-
- private:
-  static std::filesystem::path uniqueNameBeside(const std::filesystem::path& target) {
-    static std::atomic<unsigned> writesStarted{0};
-    std::filesystem::path name = target;
-    name += ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(writesStarted++);
-    return name;
-  }
-
-  std::filesystem::path target_;
-  std::filesystem::path temporary_;
-  std::FILE* file_ = nullptr;
-  int error_ = 0;
-  bool committed_ = false;
-};
 
 enum class ImageFormat { Png, Ppm, Exr };
 
@@ -147,13 +88,13 @@ constexpr int kPngCompressionLevel = 1;
 constexpr int kPngFilters = SPNG_FILTER_CHOICE_UP;
 
 void writePng(const Image& image, Encoding encoding, const std::filesystem::path& path,
-              TemporaryFile& file) {
+              AtomicFile& file) {
   const std::vector<std::uint8_t> bytes = rgbBytes(image, encoding);
   const std::unique_ptr<spng_ctx, void (*)(spng_ctx*)> png(spng_ctx_new(SPNG_CTX_ENCODER),
                                                            spng_ctx_free);
   if (!png) throw fileError(path, "cannot encode PNG (out of memory)");
   spng_rw_fn* append = [](spng_ctx*, void* user, void* data, std::size_t size) {
-    static_cast<TemporaryFile*>(user)->write(data, size);
+    static_cast<AtomicFile*>(user)->write(data, size);
     return 0;
   };
   spng_ihdr header{};
@@ -172,7 +113,7 @@ void writePng(const Image& image, Encoding encoding, const std::filesystem::path
   if (error != 0) throw fileError(path, because("cannot encode PNG", spng_strerror(error)));
 }
 
-void writePpm(const Image& image, Encoding encoding, TemporaryFile& file) {
+void writePpm(const Image& image, Encoding encoding, AtomicFile& file) {
   const std::string header =
       "P6\n" + std::to_string(image.width()) + " " + std::to_string(image.height()) + "\n255\n";
   const std::vector<std::uint8_t> bytes = rgbBytes(image, encoding);
@@ -183,7 +124,7 @@ void writePpm(const Image& image, Encoding encoding, TemporaryFile& file) {
 // OpenEXR's output stream, writing into the temporary file.
 class ExrStream : public Imf::OStream {
  public:
-  ExrStream(TemporaryFile& file, const std::filesystem::path& path)
+  ExrStream(AtomicFile& file, const std::filesystem::path& path)
       : Imf::OStream(path.c_str()), file_(file) {}
 
   void write(const char bytes[], int count) override {
@@ -193,10 +134,10 @@ class ExrStream : public Imf::OStream {
   void seekp(uint64_t position) override { file_.seek(position); }
 
  private:
-  TemporaryFile& file_;
+  AtomicFile& file_;
 };
 
-void writeExr(const Image& image, const std::filesystem::path& path, TemporaryFile& file) {
+void writeExr(const Image& image, const std::filesystem::path& path, AtomicFile& file) {
   static_assert(sizeof(Color) == 3 * sizeof(float), "Color must be three packed floats");
   // A frame buffer slice takes a mutable pointer, but an output file only reads it.
   char* pixels = const_cast<char*>(reinterpret_cast<const char*>(image.pixels().data()));
@@ -222,36 +163,62 @@ void writeExr(const Image& image, const std::filesystem::path& path, TemporaryFi
 
 }  // namespace
 
+void checkImageFormat(const std::filesystem::path& path) { formatOf(path); }
+
 void writeImage(const Image& image, const std::filesystem::path& path, Encoding encoding) {
   const ImageFormat format = formatOf(path);
-  TemporaryFile file(path);
-  switch (format) {
-    case ImageFormat::Png:
-      writePng(image, encoding, path, file);
-      break;
-    case ImageFormat::Ppm:
-      writePpm(image, encoding, file);
-      break;
-    case ImageFormat::Exr:
-      writeExr(image, path, file);
-      break;
+  try {
+    AtomicFile file(path);
+    switch (format) {
+      case ImageFormat::Png:
+        writePng(image, encoding, path, file);
+        break;
+      case ImageFormat::Ppm:
+        writePpm(image, encoding, file);
+        break;
+      case ImageFormat::Exr:
+        writeExr(image, path, file);
+        break;
+    }
+    file.commit();
+  } catch (const OutputFileError& error) {
+    throw ImageFileError(error.what());
   }
-  file.commit();
 }
 
 namespace {
 
+// What stb_image's terse reason means for the person who chose the file,
+// with the reason after it. A PNG chunk that stb_image does not know is
+// reported by its 4-letter name alone ("IDA", or "" past the end of a file).
+std::string explainedStbFailure() {
+  std::string reason = stbi_failure_reason() ? stbi_failure_reason() : "no reason given";
+  if (reason.size() <= 4) reason = "unknown PNG chunk '" + reason + "'";
+  std::string meaning = "the image data is corrupt or cut short";
+  if (reason == "unknown image type")
+    meaning = "not an image in a format RISE reads (PNG, JPEG, TGA, BMP, GIF, PSD, PNM, HDR, PCX)";
+  if (reason == "outofmem" || reason == "too large") meaning = "the image is too large to decode";
+  return meaning + " (stb_image: " + reason + ")";
+}
+
+// The size stb_image finds in the header, checked before it decodes.
+void checkImageSize(std::FILE* file, const std::filesystem::path& path) {
+  int width = 0, height = 0, channels = 0;
+  if (!stbi_info_from_file(file, &width, &height, &channels)) return;  // decoding says why
+  if (static_cast<std::int64_t>(width) * height > kMostImagePixels)
+    throw fileError(path, "the image is " + std::to_string(width) + " x " + std::to_string(height) +
+                              " pixels, more than the " + std::to_string(kMostImagePixels) +
+                              " (8192 x 4096) that RISE reads");
+}
+
 // PNG, JPEG, TGA, BMP and the other 8-bit formats stb_image reads.
-Image readEightBitImage(const std::filesystem::path& path, Encoding encoding) {
-  std::FILE* file = std::fopen(path.c_str(), "rb");
-  if (file == nullptr) throw fileError(path, because("cannot read", std::strerror(errno)));
+Image readEightBitImage(std::FILE* file, const std::filesystem::path& path, Encoding encoding) {
   int width = 0;
   int height = 0;
   int channelsInFile = 0;
   const std::unique_ptr<stbi_uc, void (*)(void*)> bytes(
       stbi_load_from_file(file, &width, &height, &channelsInFile, 3), stbi_image_free);
-  std::fclose(file);
-  if (!bytes) throw fileError(path, because("cannot read", stbi_failure_reason()));
+  if (!bytes) throw fileError(path, explainedStbFailure());
 
   Image image(width, height);
   const stbi_uc* byte = bytes.get();
@@ -267,7 +234,7 @@ Image readHdrImage(std::FILE* file, const std::filesystem::path& path) {
   int width = 0, height = 0, channels = 0;
   const std::unique_ptr<float, void (*)(void*)> values(
       stbi_loadf_from_file(file, &width, &height, &channels, 3), stbi_image_free);
-  if (!values) throw fileError(path, because("cannot read", stbi_failure_reason()));
+  if (!values) throw fileError(path, explainedStbFailure());
   Image image(width, height);
   const float* value = values.get();
   for (int y = 0; y < height; ++y)
@@ -308,15 +275,19 @@ Image readExr(const std::filesystem::path& path) {
 
 }  // namespace
 
-Image readImage(const std::filesystem::path& path, Encoding encoding) {
-  if (hasExtension(path, ".pcx")) return readPcxFile(path, encoding);
+Image readImage(const std::filesystem::path& path, Encoding encoding,
+                std::vector<std::string>* warnings) {
+  if (const std::optional<std::string> problem = fileKindOrSizeProblem(path, kLargestImageFile))
+    throw fileError(path, *problem);
+  if (hasExtension(path, ".pcx")) return readPcxFile(path, encoding, warnings);
   if (hasExtension(path, ".exr")) return readExr(path);
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              std::fclose);
   if (!file) throw fileError(path, because("cannot read", std::strerror(errno)));
-  // stb_image reads the signature and puts the file back where it was.
+  // stb_image reads the signature and the header and puts the file back where it was.
+  checkImageSize(file.get(), path);
   if (stbi_is_hdr_from_file(file.get())) return readHdrImage(file.get(), path);
-  return readEightBitImage(path, encoding);
+  return readEightBitImage(file.get(), path, encoding);
 }
 
 }  // namespace rise

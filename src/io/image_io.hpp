@@ -4,6 +4,8 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "core/image.hpp"
 
@@ -32,12 +34,19 @@ class ImageFileError : public std::runtime_error {
 void writeImage(const Image& image, const std::filesystem::path& path,
                 Encoding encoding = Encoding::Srgb);
 
+// Throws the ImageFileError that writeImage would for a path whose extension
+// names no format it writes, before anything is rendered for it.
+void checkImageFormat(const std::filesystem::path& path);
+
 // Reads an image file and decodes it to linear colours: PCX (the skins of MD2
 // models) by RISE's own reader, PNG, JPEG, TGA, BMP, PNM and the others
 // through stb_image, each decoded by `encoding` (sRGB for colours, linear for
 // data such as normal maps); Radiance HDR and OpenEXR kept as their linear
-// values. Throws
-// ImageFileError naming the file and what failed.
-Image readImage(const std::filesystem::path& path, Encoding encoding = Encoding::Srgb);
+// values. Files larger than kLargestImageFile and images of more than
+// kMostImagePixels are refused (file_limits.hpp). Throws ImageFileError naming the file and what
+// failed. A file read with a fix (a PCX palette without its marker) adds a
+// sentence saying so to `warnings`, when given.
+Image readImage(const std::filesystem::path& path, Encoding encoding = Encoding::Srgb,
+                std::vector<std::string>* warnings = nullptr);
 
 }  // namespace rise

@@ -54,7 +54,7 @@ Mapping readTurningMapping(const Field& field) {
 }  // namespace
 
 std::optional<Mapping> readMapping(const Field& field) {
-  if (field.node.IsMap()) return readTurningMapping(field);
+  if (field.node.isMap()) return readTurningMapping(field);
   const std::optional<Projection> projection = readChoice(field, kMappings);
   if (!projection) return std::nullopt;
   return Mapping{*projection};

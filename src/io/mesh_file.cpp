@@ -14,10 +14,14 @@
 #include <cstring>
 #include <fstream>
 #include <new>
+#include <optional>
+#include <span>
 #include <string>
 #include <system_error>
 #include <vector>
 
+#include "io/file_limits.hpp"
+#include "io/model_headers.hpp"
 #include "scene/vertex_normals.hpp"
 
 namespace rise {
@@ -32,11 +36,11 @@ std::string lowercase(std::string text) {
   return text;
 }
 
-// The file must exist, be a regular file that opens, and hold something.
+// The file must exist, be a regular file within the size RISE reads, open,
+// and hold something.
 void checkReadable(const std::filesystem::path& path) {
-  if (std::filesystem::is_directory(path))
-    throw MeshFileError("cannot open the file (" +
-                        std::make_error_code(std::errc::is_a_directory).message() + ")");
+  if (const std::optional<std::string> problem = fileKindOrSizeProblem(path, kLargestModelFile))
+    throw MeshFileError(*problem);
   errno = 0;
   std::ifstream file(path, std::ios::binary);
   if (!file) {
@@ -45,6 +49,19 @@ void checkReadable(const std::filesystem::path& path) {
     throw MeshFileError("cannot open the file (" + cause + ")");
   }
   if (file.peek() == std::ifstream::traits_type::eof()) throw MeshFileError("the file is empty");
+}
+
+// The first `most` bytes of a file that checkReadable passed.
+std::string readStart(const std::filesystem::path& path, std::size_t most) {
+  std::ifstream file(path, std::ios::binary);
+  std::string start(most, '\0');
+  file.read(start.data(), static_cast<std::streamsize>(start.size()));
+  start.resize(static_cast<std::size_t>(file.gcount()));
+  return start;
+}
+
+std::span<const std::uint8_t> bytesOf(const std::string& text) {
+  return {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()};
 }
 
 void checkFormatIsSupported(const std::filesystem::path& path, const Assimp::Importer& importer) {
@@ -57,17 +74,16 @@ void checkFormatIsSupported(const std::filesystem::path& path, const Assimp::Imp
                         kFormatExamples);
 }
 
-// Assimp 5.2 loops forever on a PLY file that ends inside its header, so such
-// a file is refused before Assimp sees it; a file that is not PLY at all is
-// left to Assimp to name.
-void checkPlyHeaderEnds(const std::filesystem::path& path) {
+// The header checks of the formats whose headers promise counts: Assimp
+// trusts them (and 5.2 loops forever on a PLY file that ends in its header).
+void checkHeader(const std::filesystem::path& path) {
   constexpr std::size_t kLongestHeader = 1 << 20;
-  std::ifstream file(path, std::ios::binary);
-  std::string start(kLongestHeader, '\0');
-  file.read(start.data(), static_cast<std::streamsize>(start.size()));
-  start.resize(static_cast<std::size_t>(file.gcount()));
-  if (lowercase(start.substr(0, 3)) == "ply" && start.find("end_header") == std::string::npos)
-    throw MeshFileError("the PLY header is cut short: it has no 'end_header' line");
+  const std::string extension = lowercase(path.extension().string());
+  if (extension == ".ply")
+    checkPlyHeader(readStart(path, kLongestHeader), std::filesystem::file_size(path));
+  if (extension == ".off")
+    checkOffHeader(readStart(path, kLongestHeader), std::filesystem::file_size(path));
+  if (extension == ".md2") checkedMd2Header(bytesOf(readStart(path, kLargestModelFile)));
 }
 
 // Assimp's messages, on one line, with single spaces.
@@ -82,6 +98,28 @@ std::string tidied(const std::string& message) {
   return result.empty() ? "the model loader failed without saying why" : result;
 }
 
+// What Assimp's message means for the person who chose the file, with
+// Assimp's own words after it for whoever looks deeper.
+std::string explained(const std::string& message) {
+  const auto with = [&](std::string_view meaning) {
+    return std::string(meaning) + " (Assimp: " + message + ")";
+  };
+  const auto says = [&](std::string_view words) {
+    return message.find(words) != std::string::npos;
+  };
+  if (says("is a LINE but") || says("is a POINT but"))
+    return with("a face has fewer than 3 corners (a line or a point) among faces of 3 or more");
+  if (says("Mesh contains no faces")) return with("the file has no faces");
+  if (says("mNumMeshes is 0")) return with("the file has no meshes");
+  if (says("index out of range") || (says("mIndices") && says("out of range")))
+    return with("a face refers to a vertex that the file does not have");
+  if (says("bad_alloc"))
+    return with("reading it needs more memory than there is; is the file corrupt?");
+  if (message.starts_with("Validation failed"))
+    return with("the model's data does not hold together, as in a corrupt file");
+  return with("the file cannot be read as a model");
+}
+
 const aiScene& readWithAssimp(Assimp::Importer& importer, const std::filesystem::path& path,
                               int md2Keyframe) {
   importer.SetPropertyInteger(AI_CONFIG_IMPORT_MD2_KEYFRAME, md2Keyframe);
@@ -93,7 +131,7 @@ const aiScene& readWithAssimp(Assimp::Importer& importer, const std::filesystem:
       aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_FindInvalidData;
   if (!isMd2File(path)) steps |= aiProcess_JoinIdenticalVertices;
   const aiScene* scene = importer.ReadFile(path.string(), steps);
-  if (scene == nullptr) throw MeshFileError(tidied(importer.GetErrorString()));
+  if (scene == nullptr) throw MeshFileError(explained(tidied(importer.GetErrorString())));
   return *scene;
 }
 
@@ -105,10 +143,6 @@ Mat4 toMat4(const aiMatrix4x4& m) {
   for (int row = 0; row < 4; ++row)
     for (int column = 0; column < 4; ++column) result[column][row] = m[row][column];
   return result;
-}
-
-bool isFinite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 // One Assimp mesh in its own space: its triangles (points and lines are left
@@ -162,40 +196,15 @@ MeshGeometry readModel(const std::filesystem::path& path, int md2Keyframe) {
   checkReadable(path);
   Assimp::Importer importer;
   checkFormatIsSupported(path, importer);
-  if (lowercase(path.extension().string()) == ".ply") checkPlyHeaderEnds(path);
-  // The header check says more about a cut MD2 file than Assimp does.
-  if (isMd2File(path)) md2KeyframeCount(path);
+  checkHeader(path);
   const aiScene& scene = readWithAssimp(importer, path, md2Keyframe);
   MeshGeometry model;
   if (scene.mRootNode != nullptr) appendNode(scene, *scene.mRootNode, Mat4(1.0f), model);
   if (model.triangles.empty()) throw MeshFileError("the file has no triangles");
-  if (!std::all_of(model.positions.begin(), model.positions.end(), isFinite))
+  if (!std::all_of(model.positions.begin(), model.positions.end(),
+                   [](const Vec3& v) { return isFinite(v); }))
     throw MeshFileError("a vertex has a coordinate that is not a finite number");
   return model;
-}
-
-// MD2 stores little-endian 32-bit integers, whatever the machine.
-std::int32_t littleEndianInt(const unsigned char* bytes) {
-  return static_cast<std::int32_t>(
-      static_cast<std::uint32_t>(bytes[0]) | static_cast<std::uint32_t>(bytes[1]) << 8 |
-      static_cast<std::uint32_t>(bytes[2]) << 16 | static_cast<std::uint32_t>(bytes[3]) << 24);
-}
-
-// The skin names of an MD2 header (64-byte strings), or none when the file
-// is too short to hold them.
-std::vector<std::string> md2SkinNames(const std::filesystem::path& path) {
-  constexpr int kHeaderSize = 68, kSkinNameSize = 64;
-  constexpr int kSkinCount = 5, kSkinsOffset = 11;
-  std::ifstream file(path, std::ios::binary);
-  std::array<unsigned char, kHeaderSize> header{};
-  if (!file.read(reinterpret_cast<char*>(header.data()), kHeaderSize)) return {};
-  const std::int32_t count = littleEndianInt(header.data() + 4 * kSkinCount);
-  file.seekg(littleEndianInt(header.data() + 4 * kSkinsOffset));
-  std::vector<std::string> names;
-  std::array<char, kSkinNameSize> name{};
-  for (std::int32_t i = 0; i < count && file.read(name.data(), kSkinNameSize); ++i)
-    names.emplace_back(name.data(), strnlen(name.data(), kSkinNameSize));
-  return names;
 }
 
 }  // namespace
@@ -210,15 +219,21 @@ MeshGeometry loadMeshFile(const std::filesystem::path& path, int md2Keyframe) {
   } catch (const std::bad_alloc&) {
     throw MeshFileError("reading it needs more memory than there is; is the file corrupt?");
   } catch (const std::exception& error) {
-    throw MeshFileError(tidied(error.what()));
+    throw MeshFileError(explained(tidied(error.what())));
   }
 }
 
 std::optional<std::filesystem::path> findMd2Skin(const std::filesystem::path& model) {
   const std::filesystem::path folder = model.parent_path();
   std::vector<std::filesystem::path> candidates;
-  for (const std::string& name : md2SkinNames(model))
-    candidates.push_back(folder / std::filesystem::path(name).filename());
+  try {
+    checkReadable(model);
+    const std::string file = readStart(model, kLargestModelFile);
+    for (const std::string& name : md2SkinNames(checkedMd2Header(bytesOf(file)), bytesOf(file)))
+      candidates.push_back(folder / std::filesystem::path(name).filename());
+  } catch (const MeshFileError&) {
+    // Loading the model says what is wrong with it; its skin can be found without its names.
+  }
   candidates.push_back(folder / (model.stem().string() + ".pcx"));
   for (const std::filesystem::path& candidate : candidates)
     if (std::filesystem::is_regular_file(candidate)) return candidate;
@@ -237,40 +252,9 @@ bool isMd2File(const std::filesystem::path& path) {
 }
 
 int md2KeyframeCount(const std::filesystem::path& path) {
-  // The header is 17 little-endian integers: the ident "IDP2", the version 8,
-  // the skin's size, a keyframe's size in bytes, the counts of skins,
-  // vertices, texture coordinates, triangles, GL commands and keyframes, then
-  // the offsets of each part.
-  constexpr int kHeaderSize = 68;
-  constexpr int kVersion = 1, kFrameSize = 4, kFrameCount = 10, kFramesOffset = 14;
   checkReadable(path);
-  std::ifstream file(path, std::ios::binary);
-  std::array<unsigned char, kHeaderSize> header{};
-  file.read(reinterpret_cast<char*>(header.data()), kHeaderSize);
-  if (file.gcount() < kHeaderSize)
-    throw MeshFileError(
-        "the file is too short for an MD2 header: " + std::to_string(file.gcount()) + " of " +
-        std::to_string(kHeaderSize) + " bytes");
-  const auto field = [&](int index) { return littleEndianInt(header.data() + 4 * index); };
-  if (std::memcmp(header.data(), "IDP2", 4) != 0)
-    throw MeshFileError("not an MD2 model: it does not start with 'IDP2'");
-  if (field(kVersion) != 8)
-    throw MeshFileError("MD2 version " + std::to_string(field(kVersion)) + "; expected 8");
-  const std::int64_t frames = field(kFrameCount);
-  const std::int64_t framesOffset = field(kFramesOffset);
-  const std::int64_t frameSize = field(kFrameSize);
-  if (frames < 1) throw MeshFileError("the MD2 header gives no keyframes");
-  if (framesOffset < kHeaderSize || frameSize <= 0)
-    throw MeshFileError("the MD2 header is corrupt: its keyframes start at byte " +
-                        std::to_string(framesOffset) + " and take " + std::to_string(frameSize) +
-                        " bytes each");
-  const std::int64_t framesEnd = framesOffset + frames * frameSize;
-  const auto size = static_cast<std::int64_t>(std::filesystem::file_size(path));
-  if (framesEnd > size)
-    throw MeshFileError("the file is cut short: its " + std::to_string(frames) +
-                        " keyframes should end at byte " + std::to_string(framesEnd) +
-                        ", but it has " + std::to_string(size) + " bytes");
-  return static_cast<int>(frames);
+  return static_cast<int>(
+      checkedMd2Header(bytesOf(readStart(path, kLargestModelFile))).frames.count);
 }
 
 std::vector<MeshGeometry> loadMd2Keyframes(const std::filesystem::path& path, int first, int last) {

@@ -37,8 +37,8 @@ inline constexpr float kCreaseAngleDegrees = 80.0f;
 // Whether the file is a Quake II model, by its extension.
 bool isMd2File(const std::filesystem::path& path);
 
-// The number of keyframes of an MD2 model, from its 68-byte header, which
-// must promise no more keyframes than the file holds.
+// The number of keyframes of an MD2 model, from its header, each field of
+// which is checked against the file.
 int md2KeyframeCount(const std::filesystem::path& path);
 
 // The skin of an MD2 model, found in the model's folder: the first skin its

@@ -75,10 +75,9 @@ void checkKeyframesExist(const std::vector<Field>& fields, const std::vector<int
 // scene's time, "frames: [40, 45]": while the shutter is open, or over the
 // frames of an animation.
 std::unique_ptr<Shape> readMeshFile(const CheckedMap& mesh, const Field& file, int material,
-                                    const Mat4& worldFromObject,
-                                    const std::filesystem::path& sceneDirectory) {
+                                    const Mat4& worldFromObject, SceneFiles& files) {
   const std::string fileName = readName(file);
-  const std::filesystem::path path = sceneDirectory / fileName;
+  const std::filesystem::path path = files.path(fileName);
   const std::optional<Field> frame = mesh.optional("frame");
   const std::optional<Field> frames = mesh.optional("frames");
   if (frame && frames)
@@ -114,7 +113,7 @@ std::unique_ptr<Shape> readMeshFile(const CheckedMap& mesh, const Field& file, i
 }  // namespace
 
 std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4& worldFromObject,
-                                const std::filesystem::path& sceneDirectory) {
+                                SceneFiles& files) {
   const std::optional<Field> file = mesh.optional("file");
   const std::optional<Field> vertices = mesh.optional("vertices");
   const std::optional<Field> faces = mesh.optional("faces");
@@ -122,7 +121,7 @@ std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4
     failAt(file->mark, std::string("mesh has both 'file' and '") +
                            (vertices ? "vertices" : "faces") +
                            "'; expected either a model 'file' or 'vertices' and 'faces'");
-  if (file) return readMeshFile(mesh, *file, material, worldFromObject, sceneDirectory);
+  if (file) return readMeshFile(mesh, *file, material, worldFromObject, files);
   if (!vertices && !faces)
     failAt(mesh.mark(), "mesh needs either 'file' or 'vertices' and 'faces'");
   for (const std::string_view key : {"frame", "frames"}) {
@@ -135,10 +134,10 @@ std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4
 }
 
 int withMd2Skin(const CheckedMap& mesh, int material, std::vector<Material>& materials,
-                const std::filesystem::path& sceneDirectory) {
+                SceneFiles& files) {
   const std::optional<Field> file = mesh.optional("file");
   if (!file || materials[material].texture) return material;
-  const std::filesystem::path model = sceneDirectory / readName(*file);
+  const std::filesystem::path model = files.path(readName(*file));
   if (!isMd2File(model)) return material;
   const std::optional<std::filesystem::path> skin = findMd2Skin(model);
   if (!skin) return material;
@@ -148,12 +147,15 @@ int withMd2Skin(const CheckedMap& mesh, int material, std::vector<Material>& mat
   if (worn != materials.end()) return static_cast<int>(worn - materials.begin());
   Material skinned = materials[material];
   skinned.name = name;
+  std::vector<std::string> warnings;
   try {
     skinned.texture = std::make_shared<ImageTexture>(
-        std::make_shared<const Image>(readImage(*skin)), TextureFilter::Bilinear);
+        std::make_shared<const Image>(readImage(*skin, Encoding::Srgb, &warnings)),
+        TextureFilter::Bilinear);
   } catch (const ImageFileError& error) {
     failAt(file->mark, "cannot load the skin of mesh '" + readName(*file) + "': " + error.what());
   }
+  files.warn(file->mark, warnings);
   materials.push_back(std::move(skinned));
   return static_cast<int>(materials.size()) - 1;
 }

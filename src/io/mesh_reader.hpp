@@ -12,6 +12,7 @@
 #include <memory>
 #include <vector>
 
+#include "io/scene_files.hpp"
 #include "io/yaml_reader.hpp"
 #include "scene/material.hpp"
 #include "scene/shape.hpp"
@@ -21,13 +22,13 @@ namespace rise {
 // The mesh, its vertices in its own space taking the object's `mapping` (so
 // that the texture moves with it), then placed in the world.
 std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4& worldFromObject,
-                                const std::filesystem::path& sceneDirectory);
+                                SceneFiles& files);
 
 // The material an MD2 model wears: its own when that has a texture; else the
 // same again, under the name "<material> with <skin>", with the model's skin
 // (findMd2Skin) as its texture, added to `materials` once and shared by every
 // model that wears the same skin.
 int withMd2Skin(const CheckedMap& mesh, int material, std::vector<Material>& materials,
-                const std::filesystem::path& sceneDirectory);
+                SceneFiles& files);
 
 }  // namespace rise

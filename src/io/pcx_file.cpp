@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "io/file_limits.hpp"
+
 namespace rise {
 
 namespace {
@@ -46,10 +48,17 @@ PcxLayout readLayout(std::span<const std::uint8_t> bytes, const std::string& nam
   const PcxLayout layout{littleEndian16(bytes, 8) - littleEndian16(bytes, 4) + 1,
                          littleEndian16(bytes, 10) - littleEndian16(bytes, 6) + 1, planes,
                          littleEndian16(bytes, 66)};
-  if (layout.width <= 0 || layout.height <= 0 || layout.bytesPerLine < layout.width)
+  // Lines are padded to an even length; more than twice the width is no
+  // padding but a corrupt header.
+  if (layout.width <= 0 || layout.height <= 0 || layout.bytesPerLine < layout.width ||
+      layout.bytesPerLine > 2 * layout.width + 2)
     throw pcxError(name, "the PCX header is corrupt: its image is " + std::to_string(layout.width) +
                              " x " + std::to_string(layout.height) + " with lines of " +
                              std::to_string(layout.bytesPerLine) + " bytes");
+  if (static_cast<std::int64_t>(layout.width) * layout.height > kMostImagePixels)
+    throw pcxError(name, "the image is " + std::to_string(layout.width) + " x " +
+                             std::to_string(layout.height) + " pixels, more than the " +
+                             std::to_string(kMostImagePixels) + " (8192 x 4096) that RISE reads");
   return layout;
 }
 
@@ -57,6 +66,10 @@ PcxLayout readLayout(std::span<const std::uint8_t> bytes, const std::string& nam
 // bytes. Runs may carry on from one line to the next, as some writers do.
 std::vector<std::uint8_t> decodeRuns(std::span<const std::uint8_t> encoded, std::size_t decodedSize,
                                      const std::string& name) {
+  // Two bytes give a run of at most 63: a longer image is cut short.
+  constexpr std::size_t kLongestRunPerByte = 32;
+  if (decodedSize > kLongestRunPerByte * encoded.size())
+    throw pcxError(name, "the PCX image data is cut short");
   std::vector<std::uint8_t> decoded;
   decoded.reserve(decodedSize);
   std::size_t at = 0;
@@ -74,17 +87,32 @@ std::vector<std::uint8_t> decodeRuns(std::span<const std::uint8_t> encoded, std:
   return decoded;
 }
 
+// Where the image data of an 8-bit image ends: at the 0x0C marker before
+// its palette of 768 bytes, or, when a writer left the marker out (some
+// Quake II skins), at the palette, said in a warning.
+std::size_t imageDataEnd(std::span<const std::uint8_t> bytes, const std::string& name,
+                         std::vector<std::string>* warnings) {
+  if (bytes.size() >= kHeaderSize + kPaletteSize &&
+      bytes[bytes.size() - kPaletteSize] == kPaletteMarker)
+    return bytes.size() - kPaletteSize;
+  if (bytes.size() < kHeaderSize + kPaletteSize - 1)
+    throw pcxError(name, "the 8-bit PCX image has no 256-colour palette at its end");
+  if (warnings)
+    warnings->push_back(name +
+                        ": the 8-bit PCX image's palette lacks its 0x0C marker byte; read the "
+                        "last 768 bytes as the palette");
+  return bytes.size() - kPaletteSize + 1;
+}
+
 }  // namespace
 
-Image decodePcx(std::span<const std::uint8_t> bytes, const std::string& name, Encoding encoding) {
+Image decodePcx(std::span<const std::uint8_t> bytes, const std::string& name, Encoding encoding,
+                std::vector<std::string>* warnings) {
   const PcxLayout layout = readLayout(bytes, name);
   const bool paletted = layout.planes == 1;
-  if (paletted && (bytes.size() < kHeaderSize + kPaletteSize ||
-                   bytes[bytes.size() - kPaletteSize] != kPaletteMarker))
-    throw pcxError(name, "the 8-bit PCX image has no 256-colour palette at its end");
+  const std::size_t dataEnd = paletted ? imageDataEnd(bytes, name, warnings) : bytes.size();
   const std::size_t lineSize = static_cast<std::size_t>(layout.planes) * layout.bytesPerLine;
-  const std::span<const std::uint8_t> encoded =
-      bytes.subspan(kHeaderSize, bytes.size() - kHeaderSize - (paletted ? kPaletteSize : 0));
+  const std::span<const std::uint8_t> encoded = bytes.subspan(kHeaderSize, dataEnd - kHeaderSize);
   const std::vector<std::uint8_t> lines = decodeRuns(encoded, lineSize * layout.height, name);
   const std::span<const std::uint8_t> palette = bytes.last(kPaletteSize - 1);
 
@@ -106,13 +134,14 @@ Image decodePcx(std::span<const std::uint8_t> bytes, const std::string& name, En
   return image;
 }
 
-Image readPcxFile(const std::filesystem::path& path, Encoding encoding) {
+Image readPcxFile(const std::filesystem::path& path, Encoding encoding,
+                  std::vector<std::string>* warnings) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw pcxError(path.string(), "cannot read the file");
   const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)),
                                         std::istreambuf_iterator<char>());
   if (file.bad()) throw pcxError(path.string(), "cannot read the file");
-  return decodePcx(bytes, path.string(), encoding);
+  return decodePcx(bytes, path.string(), encoding, warnings);
 }
 
 }  // namespace rise

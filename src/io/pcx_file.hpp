@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <span>
+#include <string>
+#include <vector>
 
 #include "core/image.hpp"
 #include "io/image_io.hpp"
@@ -16,11 +18,14 @@ namespace rise {
 
 // Decodes a PCX file held in memory; `name` names it in errors. Throws
 // ImageFileError for anything that is not a PCX image of a supported kind,
-// or is cut short.
+// is larger than kMostImagePixels, or is cut short. An 8-bit image whose
+// palette lacks its marker byte is read, with a warning added to `warnings`
+// when given.
 Image decodePcx(std::span<const std::uint8_t> bytes, const std::string& name,
-                Encoding encoding = Encoding::Srgb);
+                Encoding encoding = Encoding::Srgb, std::vector<std::string>* warnings = nullptr);
 
 // Reads and decodes a PCX file. Throws ImageFileError naming the path.
-Image readPcxFile(const std::filesystem::path& path, Encoding encoding = Encoding::Srgb);
+Image readPcxFile(const std::filesystem::path& path, Encoding encoding = Encoding::Srgb,
+                  std::vector<std::string>* warnings = nullptr);
 
 }  // namespace rise

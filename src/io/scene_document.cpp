@@ -5,8 +5,9 @@
 #include <charconv>
 #include <optional>
 
+#include "io/scene_error.hpp"
 #include "io/scene_file.hpp"
-#include "io/yaml_reader.hpp"
+#include "io/yaml_document.hpp"
 
 namespace rise {
 
@@ -15,6 +16,24 @@ struct SceneDocument::Tree {
 };
 
 namespace {
+
+// The text is read by libyaml first (io/yaml_document.hpp), the scene
+// loader's parser, whose messages are located and in a writer's words, and
+// which refuses what yaml-cpp 0.7 would parse without bound (a leading
+// comma); yaml-cpp then builds the tree that the editor changes and writes.
+std::vector<YAML::Node> parseYaml(std::string_view text, const std::string& sourceName) {
+  try {
+    parseYamlDocuments(text);
+  } catch (const YamlError& error) {
+    throw SceneError(sourceName, error.mark().line + 1, error.mark().column + 1, error.what());
+  }
+  try {
+    return YAML::LoadAll(std::string(text));
+  } catch (const YAML::ParserException& error) {
+    throw SceneError(sourceName, error.mark.line + 1, error.mark.column + 1,
+                     "invalid YAML: " + error.msg);
+  }
+}
 
 std::vector<std::string> partsOf(std::string_view path) {
   std::vector<std::string> parts;

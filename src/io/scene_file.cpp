@@ -1,19 +1,17 @@
 #include "io/scene_file.hpp"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <utility>
 #include <vector>
 
+#include "io/file_limits.hpp"
 #include "io/image_io.hpp"
 #include "io/shape_reader.hpp"
 #include "io/texture_reader.hpp"
@@ -26,6 +24,12 @@ namespace {
 // How close to parallel the view direction and the up vector may be (the
 // sine of the angle between them) before the camera has no defined "right".
 constexpr float kParallelSine = 1e-6f;
+// Beyond this distance from what it looks at, a camera's rays square numbers
+// that floats cannot hold.
+constexpr double kFarthestCamera = 1e15;
+constexpr float kLeastIor = 0.1f;
+constexpr float kGreatestIor = 10.0f;
+constexpr float kGreatestRoughness = 10.0f;  // a cone of 84 degrees
 
 SamplePattern readPattern(const Field& field) {
   return readChoice<SamplePattern>(field, {{"none", SamplePattern::None},
@@ -65,8 +69,15 @@ ImageSpec readImage(const Field& field) {
       field, "image",
       {"width", "height", "background", "samples", "pattern", "filter", "adaptive_threshold"});
   ImageSpec spec;
-  readIfPresent(image, "width", spec.width, readPositiveWholeNumber);
-  readIfPresent(image, "height", spec.height, readPositiveWholeNumber);
+  const auto side = [](const Field& field) {
+    const int pixels = readPositiveWholeNumber(field);
+    if (pixels > kLargestImageSide)
+      failExpected(field,
+                   "a whole number of pixels from 1 to " + std::to_string(kLargestImageSide));
+    return pixels;
+  };
+  readIfPresent(image, "width", spec.width, side);
+  readIfPresent(image, "height", spec.height, side);
   readIfPresent(image, "background", spec.background, readColor);
   spec.sampling = readSampling(image, field);
   return spec;
@@ -111,6 +122,11 @@ Camera readCamera(const Field& field) {
     failAt(lookAt.mark,
            "'look_at' in camera is the same point as 'position'; expected a point for the camera "
            "to look towards");
+  const double distance = glm::length(glm::dvec3(camera.lookAt) - glm::dvec3(camera.position));
+  if (distance > kFarthestCamera)
+    failAt(lookAt.mark, "'look_at' in camera is " + shortNumber(distance) +
+                            " units from 'position'; expected a camera at most " +
+                            shortNumber(kFarthestCamera) + " units from the point it looks at");
   const std::optional<Field> up = map.optional("up");
   if (up) camera.up = readDirection(*up);
   checkUpIsAcrossView(camera, up, field);
@@ -208,7 +224,7 @@ std::unique_ptr<Light> readLight(const Field& item) {
   return kind.read(light, readLightColor(light));
 }
 
-Material readMaterial(const MapEntry& entry, const std::filesystem::path& sceneDirectory) {
+Material readMaterial(const MapEntry& entry, SceneFiles& files) {
   const std::string name = "material '" + entry.key + "'";
   const CheckedMap map(makeField(entry.value, name, entry.keyMark), name,
                        {"color", "texture", "bump", "normal_map", "ka", "kd", "ks", "ks_texture",
@@ -217,36 +233,40 @@ Material readMaterial(const MapEntry& entry, const std::filesystem::path& sceneD
   material.name = entry.key;
   readIfPresent(map, "color", material.color, readColor);
   if (const std::optional<Field> texture = map.optional("texture"))
-    material.texture = readTexture(*texture, sceneDirectory);
+    material.texture = readTexture(*texture, files);
   if (const std::optional<Field> bump = map.optional("bump"))
-    material.bump = readBump(*bump, sceneDirectory);
+    material.bump = readBump(*bump, files);
   if (const std::optional<Field> normalMap = map.optional("normal_map"))
-    material.normalMap = readNormalMap(*normalMap, sceneDirectory);
+    material.normalMap = readNormalMap(*normalMap, files);
   readIfPresent(map, "ka", material.ka, readNonNegative);
   readIfPresent(map, "kd", material.kd, readNonNegative);
   readIfPresent(map, "ks", material.ks, readNonNegative);
   if (const std::optional<Field> ksTexture = map.optional("ks_texture"))
-    material.ksTexture = readTexture(*ksTexture, sceneDirectory, Encoding::Linear);
+    material.ksTexture = readTexture(*ksTexture, files, Encoding::Linear);
   readIfPresent(map, "n", material.n, readNonNegative);
-  readIfPresent(map, "reflection", material.reflection, readNonNegative);
-  readIfPresent(map, "transmission", material.transmission, readNonNegative);
-  readIfPresent(map, "ior", material.ior, readPositive);
-  readIfPresent(map, "roughness", material.roughness, readNonNegative);
+  // Each ray's weight is a fraction of light; an index of refraction or a
+  // cone beyond these makes directions that floats cannot hold.
+  const auto fraction = [](const Field& field) { return readNumberFrom(field, 0.0f, 1.0f); };
+  readIfPresent(map, "reflection", material.reflection, fraction);
+  readIfPresent(map, "transmission", material.transmission, fraction);
+  readIfPresent(map, "ior", material.ior,
+                [](const Field& field) { return readNumberFrom(field, kLeastIor, kGreatestIor); });
+  readIfPresent(map, "roughness", material.roughness,
+                [](const Field& field) { return readNumberFrom(field, 0.0f, kGreatestRoughness); });
   return material;
 }
 
-std::vector<Material> readMaterials(const Field& field,
-                                    const std::filesystem::path& sceneDirectory) {
+std::vector<Material> readMaterials(const Field& field, SceneFiles& files) {
   std::vector<Material> materials;
   for (const MapEntry& entry :
        readMap(field, "a map from material names to materials", "'materials'"))
-    materials.push_back(readMaterial(entry, sceneDirectory));
+    materials.push_back(readMaterial(entry, files));
   return materials;
 }
 
-Scene readScene(const YAML::Node& root, std::string source) {
+Scene readScene(const YamlNode& root, std::string source) {
   const CheckedMap map(
-      Field{root, "the scene", root.Mark()}, "the scene",
+      Field{root, "the scene", root.mark()}, "the scene",
       {"image", "camera", "ambient", "lights", "materials", "objects", "animation"});
   Scene scene;
   scene.source = std::move(source);
@@ -258,18 +278,22 @@ Scene readScene(const YAML::Node& root, std::string source) {
     for (const Field& item : readList(*lights, "a list of lights", "an item of 'lights'"))
       scene.lights.push_back(readLight(item));
   }
-  const std::filesystem::path sceneDirectory = std::filesystem::path(scene.source).parent_path();
+  SceneFiles files(std::filesystem::path(scene.source).parent_path());
   if (const std::optional<Field> materials = map.optional("materials"))
-    scene.materials = readMaterials(*materials, sceneDirectory);
+    scene.materials = readMaterials(*materials, files);
   for (const Field& item :
        readList(map.required("objects"), "a list of objects", "an item of 'objects'")) {
-    scene.shapes.push_back(readObject(item, scene.materials, sceneDirectory));
+    scene.shapes.push_back(readObject(item, scene.materials, files));
     scene.shapeNames.push_back(describeObject(item));
   }
+  for (const SceneFiles::Warning& warning : files.warnings())
+    scene.warnings.push_back(scene.source + ":" + std::to_string(warning.mark.line + 1) + ":" +
+                             std::to_string(warning.mark.column + 1) +
+                             ": warning: " + warning.message);
   return scene;
 }
 
-SceneError errorAt(const std::string& source, const YAML::Mark& mark, const std::string& message) {
+SceneError errorAt(const std::string& source, Mark mark, const std::string& message) {
   return SceneError(source, mark.line + 1, mark.column + 1, message);
 }
 
@@ -277,21 +301,34 @@ SceneError errorAt(const std::string& source, const YAML::Mark& mark, const std:
 
 Scene loadScene(std::string_view text, std::string sourceName) {
   try {
-    const std::vector<YAML::Node> documents = parseYaml(text, sourceName);
-    if (documents.empty() || documents[0].IsNull())
+    const std::vector<YamlNode> documents = parseYamlDocuments(text);
+    if (documents.empty() || documents[0].isNull())
       throw SceneError(sourceName,
                        "the scene file is empty; expected at least 'camera' and 'objects'");
     // An empty document after the scene, as an editor may leave after a
     // final '---', says nothing and is harmless.
     const auto second = std::find_if(documents.begin() + 1, documents.end(),
-                                     [](const YAML::Node& document) { return !document.IsNull(); });
+                                     [](const YamlNode& document) { return !document.isNull(); });
     if (second != documents.end())
-      failAt(second->Mark(),
+      failAt(second->mark(),
              "a second YAML document (after '---'); expected the scene file to hold one scene");
     return readScene(documents[0], sourceName);
+  } catch (const YamlError& error) {
+    throw errorAt(sourceName, error.mark(), error.what());
   } catch (const YamlValueError& error) {
     throw errorAt(sourceName, error.mark(), error.what());
   }
+}
+
+Scene loadSceneStream(std::istream& in, std::string sourceName) {
+  const std::optional<std::string> text = readAtMost(in, kLargestSceneFile);
+  if (in.bad()) throw SceneError(sourceName, "cannot read the scene file");
+  if (!text)
+    throw SceneError(sourceName, "the scene file is larger than the " +
+                                     megabytes(kLargestSceneFile) +
+                                     " that RISE reads; expected a scene, with large meshes in "
+                                     "model files (mesh: {file})");
+  return loadScene(*text, std::move(sourceName));
 }
 
 Scene loadSceneFile(const std::filesystem::path& path) {
@@ -307,10 +344,7 @@ Scene loadSceneFile(const std::filesystem::path& path) {
         errno != 0 ? std::generic_category().message(errno) : "unknown reason";
     throw SceneError(path.string(), "cannot open the scene file (" + cause + ")");
   }
-  std::ostringstream text;
-  text << file.rdbuf();
-  if (file.bad()) throw SceneError(path.string(), "cannot read the scene file");
-  return loadScene(text.str(), path.string());
+  return loadSceneStream(file, path.string());
 }
 
 }  // namespace rise

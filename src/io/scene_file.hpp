@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <istream>
 #include <string>
 #include <string_view>
 
@@ -14,7 +15,9 @@
 
 namespace rise {
 
+// Scene files (and streams) larger than kLargestSceneFile are refused.
 Scene loadSceneFile(const std::filesystem::path& path);
+Scene loadSceneStream(std::istream& in, std::string sourceName);
 
 // Loads a scene from text; sourceName names it in messages ("<stdin>").
 Scene loadScene(std::string_view text, std::string sourceName);

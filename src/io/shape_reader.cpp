@@ -42,9 +42,9 @@ int readMaterialReference(const Field& field, const std::vector<Material>& mater
 }
 
 Vec3 readScale(const Field& field) {
-  if (!field.node.IsSequence() && !field.node.IsScalar())
+  if (!field.node.isSequence() && !field.node.isScalar())
     failExpected(field, "a number or a list of 3 numbers [x, y, z]");
-  const Vec3 scale = field.node.IsSequence() ? readVec3(field) : Vec3(readNumber(field));
+  const Vec3 scale = field.node.isSequence() ? readVec3(field) : Vec3(readNumber(field));
   if (glm::any(glm::equal(scale, Vec3(0.0f))))
     failExpected(field, "a scale that is not 0 on any axis");
   return scale;
@@ -76,25 +76,22 @@ std::vector<Vec3> readPlacedPoints(const Field& field, std::string_view expectat
 // built in their own space and wrapped in a TransformedShape. Files that a
 // shape names are found from the scene file's folder.
 using ShapeReader = std::unique_ptr<Shape> (*)(const CheckedMap& properties, int material,
-                                               const Mat4& worldFromObject,
-                                               const std::filesystem::path& sceneDirectory);
+                                               const Mat4& worldFromObject, SceneFiles& files);
 
-std::unique_ptr<Shape> readPlane(const CheckedMap& plane, int material, const Mat4&,
-                                 const std::filesystem::path&) {
+std::unique_ptr<Shape> readPlane(const CheckedMap& plane, int material, const Mat4&, SceneFiles&) {
   const Vec3 point = readVec3(plane.required("point"));
   const Vec3 normal = readDirection(plane.required("normal"));
   return std::make_unique<Plane>(point, normal, material);
 }
 
 std::unique_ptr<Shape> readSphere(const CheckedMap& sphere, int material, const Mat4&,
-                                  const std::filesystem::path&) {
+                                  SceneFiles&) {
   const Vec3 center = readVec3(sphere.required("center"));
   const float radius = readPositive(sphere.required("radius"));
   return std::make_unique<Sphere>(center, radius, material);
 }
 
-std::unique_ptr<Shape> readBox(const CheckedMap& box, int material, const Mat4&,
-                               const std::filesystem::path&) {
+std::unique_ptr<Shape> readBox(const CheckedMap& box, int material, const Mat4&, SceneFiles&) {
   const Field minField = box.required("min");
   const Field maxField = box.required("max");
   const Vec3 min = readVec3(minField);
@@ -108,7 +105,7 @@ std::unique_ptr<Shape> readBox(const CheckedMap& box, int material, const Mat4&,
 // Cylinders and cones: a base point, an axis, a radius and a height.
 template <typename AxialShape>
 std::unique_ptr<Shape> readAxialShape(const CheckedMap& shape, int material, const Mat4&,
-                                      const std::filesystem::path&) {
+                                      SceneFiles&) {
   const Vec3 base = readVec3(shape.required("base"));
   const Vec3 axis = readDirection(shape.required("axis"));
   const float radius = readPositive(shape.required("radius"));
@@ -117,7 +114,7 @@ std::unique_ptr<Shape> readAxialShape(const CheckedMap& shape, int material, con
 }
 
 std::unique_ptr<Shape> readTriangle(const CheckedMap& triangle, int material,
-                                    const Mat4& worldFromObject, const std::filesystem::path&) {
+                                    const Mat4& worldFromObject, SceneFiles&) {
   const Field field = triangle.required("vertices");
   const std::vector<Vec3> v =
       readPlacedPoints(field, "a list of 3 points [x, y, z]", 3, 3, worldFromObject);
@@ -130,7 +127,7 @@ std::unique_ptr<Shape> readTriangle(const CheckedMap& triangle, int material,
 }
 
 std::unique_ptr<Shape> readPolygon(const CheckedMap& polygon, int material,
-                                   const Mat4& worldFromObject, const std::filesystem::path&) {
+                                   const Mat4& worldFromObject, SceneFiles&) {
   const Field field = polygon.required("vertices");
   std::vector<Vec3> vertices =
       readPlacedPoints(field, "a list of 3 or more points [x, y, z]", 3, SIZE_MAX, worldFromObject);
@@ -168,7 +165,7 @@ const std::vector<ShapeKind>& shapeKinds() {
 }  // namespace
 
 std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& materials,
-                                  const std::filesystem::path& sceneDirectory) {
+                                  SceneFiles& files) {
   std::vector<std::string> kindNames;
   for (const ShapeKind& kind : shapeKinds()) kindNames.push_back(kind.name);
   const MapEntry entry = readKindAndProperties(item, "shape", kindNames);
@@ -179,7 +176,7 @@ std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& mate
   keys.insert(keys.end(), {"material", "transform", "motion"});
   const CheckedMap properties(makeField(entry.value, kind.name, entry.keyMark), kind.name, keys);
   int material = readMaterialReference(properties.required("material"), materials, kind.name);
-  if (kind.name == "mesh") material = withMd2Skin(properties, material, materials, sceneDirectory);
+  if (kind.name == "mesh") material = withMd2Skin(properties, material, materials, files);
   TransformSpec transform;
   if (const std::optional<Field> field = properties.optional("transform"))
     transform = readPlacement(*field, "the transform of " + kind.name, TransformSpec{});
@@ -190,7 +187,7 @@ std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& mate
       field && kind.name != "mesh")
     mapping = readMapping(*field);
   const auto readInOwnSpace = [&] {
-    std::unique_ptr<Shape> shape = kind.read(properties, material, Mat4(1.0f), sceneDirectory);
+    std::unique_ptr<Shape> shape = kind.read(properties, material, Mat4(1.0f), files);
     if (!mapping) return shape;
     return std::unique_ptr<Shape>(std::make_unique<MappedShape>(std::move(shape), *mapping));
   };
@@ -201,7 +198,7 @@ std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& mate
 
   const Mat4 toWorld = worldFromObject(transform);
   if (kind.takesTransformIntoVertices && !mapping)
-    return kind.read(properties, material, toWorld, sceneDirectory);
+    return kind.read(properties, material, toWorld, files);
   std::unique_ptr<Shape> shape = readInOwnSpace();
   if (transform.isIdentity()) return shape;
   return std::make_unique<TransformedShape>(std::move(shape), toWorld);

@@ -21,7 +21,7 @@ const std::vector<std::pair<std::string, NoisePattern>> kNoisePatterns{
 
 // A number for both coordinates, or a pair [u, v].
 Vec2 readPair(const Field& field) {
-  if (!field.node.IsSequence()) return Vec2(readNumber(field));
+  if (!field.node.isSequence()) return Vec2(readNumber(field));
   const std::vector<Field> items = readList(field, "a number or a list of 2 numbers [u, v]",
                                             "a coordinate of " + field.name, 2, 2);
   return {readNumber(items[0]), readNumber(items[1])};
@@ -42,8 +42,7 @@ TextureFilter readTextureFilter(const Field& field) {
 }
 
 std::shared_ptr<const Texture> readImageTexture(const CheckedMap& map, const Field& image,
-                                                const std::filesystem::path& sceneDirectory,
-                                                Encoding encoding) {
+                                                SceneFiles& files, Encoding encoding) {
   const std::string fileName = readName(image);
   TextureFilter filter = TextureFilter::Bilinear;
   if (const std::optional<Field> field = map.optional("filter")) filter = readTextureFilter(*field);
@@ -54,12 +53,15 @@ std::shared_ptr<const Texture> readImageTexture(const CheckedMap& map, const Fie
   if (const std::optional<Field> field = map.optional("rotate"))
     transform.rotateDegrees = readNumber(*field);
   std::shared_ptr<const Texture> texture;
+  std::vector<std::string> warnings;
   try {
     texture = std::make_shared<ImageTexture>(
-        std::make_shared<const Image>(readImage(sceneDirectory / fileName, encoding)), filter);
+        std::make_shared<const Image>(readImage(files.path(fileName), encoding, &warnings)),
+        filter);
   } catch (const ImageFileError& error) {
     failAt(image.mark, "cannot load texture image '" + fileName + "': " + error.what());
   }
+  files.warn(image.mark, warnings);
   if (transform.isIdentity()) return texture;
   return std::make_shared<TransformedTexture>(std::move(texture), transform);
 }
@@ -89,25 +91,22 @@ constexpr float kBumpStep = 1.0f / 8192.0f;
 
 }  // namespace
 
-std::shared_ptr<const NormalMap> readNormalMap(const Field& field,
-                                               const std::filesystem::path& sceneDirectory) {
+std::shared_ptr<const NormalMap> readNormalMap(const Field& field, SceneFiles& files) {
   const CheckedMap map(field, "normal map", {"image", "filter", "scale", "offset", "rotate"});
   return std::make_shared<NormalMap>(
-      readImageTexture(map, map.required("image"), sceneDirectory, Encoding::Linear));
+      readImageTexture(map, map.required("image"), files, Encoding::Linear));
 }
 
-std::shared_ptr<const BumpMap> readBump(const Field& field,
-                                        const std::filesystem::path& sceneDirectory) {
+std::shared_ptr<const BumpMap> readBump(const Field& field, SceneFiles& files) {
   const CheckedMap bump(field, "bump", {"map", "strength"});
-  std::shared_ptr<const Texture> map = readTexture(bump.required("map"), sceneDirectory);
+  std::shared_ptr<const Texture> map = readTexture(bump.required("map"), files);
   float strength = 1.0f;
   if (const std::optional<Field> strengthField = bump.optional("strength"))
     strength = readNumber(*strengthField);
   return std::make_shared<BumpMap>(std::move(map), strength, Vec2(kBumpStep));
 }
 
-std::shared_ptr<const Texture> readTexture(const Field& field,
-                                           const std::filesystem::path& sceneDirectory,
+std::shared_ptr<const Texture> readTexture(const Field& field, SceneFiles& files,
                                            Encoding encoding) {
   std::vector<std::string> kinds{"image", "checker"};
   for (const auto& [name, pattern] : kNoisePatterns) kinds.push_back(name);
@@ -125,7 +124,7 @@ std::shared_ptr<const Texture> readTexture(const Field& field,
   if (given.size() != 1)
     failAt(map.mark(), "texture needs exactly one of " + joinedWithCommas(kinds) + "; got " +
                            (given.empty() ? "none" : joinedWithCommas(givenKinds)));
-  if (givenKinds[0] == "image") return readImageTexture(map, given[0], sceneDirectory, encoding);
+  if (givenKinds[0] == "image") return readImageTexture(map, given[0], files, encoding);
   for (const std::string_view key : {"filter", "scale", "offset", "rotate"}) {
     if (const std::optional<Field> misplaced = map.optional(key))
       failAt(misplaced->mark,

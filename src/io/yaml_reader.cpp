@@ -1,8 +1,10 @@
 #include "io/yaml_reader.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <utility>
 
 namespace rise {
@@ -14,29 +16,18 @@ constexpr std::size_t kMostKeysListed = 6;
 
 std::string quoted(std::string_view text) { return std::string("'").append(text).append("'"); }
 
-// A quoted scalar ("1.5", '2') is a string in YAML even when it looks like a
-// number; yaml-cpp marks it with the non-specific tag "!".
-bool isQuoted(const YAML::Node& node) { return node.Tag() == "!"; }
-
-std::optional<double> numberIn(const YAML::Node& node) {
-  double value = 0.0;
-  if (!node.IsScalar() || isQuoted(node) || !YAML::convert<double>::decode(node, value))
-    return std::nullopt;
-  return value;
-}
-
-std::string describeScalar(const YAML::Node& node) {
-  std::string text = node.Scalar();
+std::string describeScalar(const YamlNode& node) {
+  std::string text = node.scalar();
   if (text.size() > kLongestValueShown) text = text.substr(0, kLongestValueShown - 3) + "...";
-  if (isQuoted(node)) return "the string \"" + text + "\"";
-  return numberIn(node) ? text : quoted(text);
+  if (node.isQuoted()) return "the string \"" + text + "\"";
+  return node.number() ? text : quoted(text);
 }
 
-std::string describeSequence(const YAML::Node& node) {
+std::string describeSequence(const YamlNode& node) {
   if (node.size() == 0) return "an empty list";
   std::vector<std::string> items;
-  for (const YAML::Node& item : node) {
-    if (!item.IsScalar()) break;
+  for (const YamlNode& item : node.items()) {
+    if (!item.isScalar()) break;
     items.push_back(describeScalar(item));
   }
   const std::string bracketed = std::string("[").append(joinedWithCommas(items)).append("]");
@@ -45,12 +36,12 @@ std::string describeSequence(const YAML::Node& node) {
                           : "a list of " + std::to_string(node.size()) + " items";
 }
 
-std::string describeMap(const YAML::Node& node) {
+std::string describeMap(const YamlNode& node) {
   if (node.size() == 0) return "an empty map";
   if (node.size() > kMostKeysListed) return "a map of " + std::to_string(node.size()) + " keys";
   std::vector<std::string> keys;
-  for (const auto& entry : node)
-    keys.push_back(entry.first.IsScalar() ? entry.first.Scalar() : "?");
+  for (const auto& entry : node.entries())
+    keys.push_back(entry.first.isScalar() ? entry.first.scalar() : "?");
   return (keys.size() == 1 ? "a map with the key " : "a map with the keys ") +
          joinedWithCommas(keys);
 }
@@ -105,7 +96,7 @@ bool withinBound(double value, Bound bound) {
 }
 
 double readBoundedNumber(const Field& field, Bound bound, std::string_view kind) {
-  const std::optional<double> value = numberIn(field.node);
+  const std::optional<double> value = field.node.number();
   if (!value) failExpected(field, numberExpectation(bound, kind));
   if (!std::isfinite(*value) || std::abs(*value) > std::numeric_limits<float>::max())
     failExpected(field, numberExpectation(bound, "a finite number"));
@@ -113,32 +104,20 @@ double readBoundedNumber(const Field& field, Bound bound, std::string_view kind)
   return *value;
 }
 
-// yaml-cpp's wording for the syntax errors people make most, said plainly.
-std::string explainSyntaxError(const YAML::ParserException& error, std::string_view text) {
-  if (error.msg == YAML::ErrorMsg::END_OF_SEQ_FLOW)
-    return "a list opened with '[' is not closed with ']'";
-  if (error.msg == YAML::ErrorMsg::END_OF_MAP_FLOW)
-    return "a map opened with '{' is not closed with '}'";
-  if (error.msg == YAML::ErrorMsg::FLOW_END && error.mark.pos >= 0 &&
-      static_cast<std::size_t>(error.mark.pos) < text.size())
-    return std::string("unexpected '") + text[error.mark.pos] +
-           "'; check that the brackets before it are closed in order";
-  if (error.msg == YAML::ErrorMsg::MAP_VALUE)
-    return "unexpected ':' (wrong indentation, a tab, or a value with ': ' that needs quotes?)";
-  if (error.msg == YAML::ErrorMsg::TAB_IN_INDENTATION)
-    return "a tab in the indentation; YAML indents with spaces";
-  return error.msg;
-}
-
 }  // namespace
 
-std::vector<YAML::Node> parseYaml(std::string_view text, const std::string& sourceName) {
-  try {
-    return YAML::LoadAll(std::string(text));
-  } catch (const YAML::ParserException& error) {
-    throw SceneError(sourceName, error.mark.line + 1, error.mark.column + 1,
-                     "invalid YAML: " + explainSyntaxError(error, text));
+std::string shortNumber(double value) {
+  std::array<char, 32> text{};
+  std::snprintf(text.data(), text.size(), "%.3g", value);
+  std::string written = text.data();
+  // "1e+30" and "1e-05" as "1e30" and "1e-5".
+  if (const std::size_t e = written.find('e'); e != std::string::npos) {
+    std::string exponent = written.substr(e + 1);
+    const bool negative = exponent.starts_with('-');
+    exponent.erase(0, exponent.find_first_not_of("+-0"));
+    written = written.substr(0, e + 1) + (negative ? "-" : "") + exponent;
   }
+  return written;
 }
 
 std::string joinedWithCommas(const std::vector<std::string>& words) {
@@ -147,29 +126,26 @@ std::string joinedWithCommas(const std::vector<std::string>& words) {
   return text;
 }
 
-Field makeField(const YAML::Node& node, std::string name, const YAML::Mark& keyMark) {
-  return Field{node, std::move(name), node.IsNull() ? keyMark : node.Mark()};
+Field makeField(const YamlNode& node, std::string name, Mark keyMark) {
+  return Field{node, std::move(name), node.isNull() ? keyMark : node.mark()};
 }
 
-void failAt(const YAML::Mark& mark, const std::string& message) {
-  throw YamlValueError(mark, message);
-}
+void failAt(Mark mark, const std::string& message) { throw YamlValueError(mark, message); }
 
 void failExpected(const Field& field, std::string_view expectation) {
   failAt(field.mark,
          field.name + " is " + describe(field.node) + "; expected " + std::string(expectation));
 }
 
-std::string describe(const YAML::Node& node) {
-  switch (node.Type()) {
-    case YAML::NodeType::Scalar:
+std::string describe(const YamlNode& node) {
+  switch (node.kind()) {
+    case YamlNode::Kind::Scalar:
       return describeScalar(node);
-    case YAML::NodeType::Sequence:
+    case YamlNode::Kind::Sequence:
       return describeSequence(node);
-    case YAML::NodeType::Map:
+    case YamlNode::Kind::Map:
       return describeMap(node);
-    case YAML::NodeType::Null:
-    case YAML::NodeType::Undefined:
+    case YamlNode::Kind::Null:
       break;
   }
   return "empty";
@@ -210,6 +186,13 @@ int readWholeNumber(const Field& field, Bound bound) {
   return static_cast<int>(value);
 }
 
+float readNumberFrom(const Field& field, float least, float most) {
+  const float value = readNumber(field);
+  if (value < least || value > most)
+    failExpected(field, "a number from " + shortNumber(least) + " to " + shortNumber(most));
+  return value;
+}
+
 Vec3 readVec3(const Field& field) {
   const std::vector<Field> coordinates =
       readList(field, "a list of 3 numbers [x, y, z]", "a coordinate of " + field.name, 3, 3);
@@ -232,8 +215,8 @@ Color readColor(const Field& field) {
 }
 
 std::string readName(const Field& field) {
-  if (!field.node.IsScalar()) failExpected(field, "a name");
-  return field.node.Scalar();
+  if (!field.node.isScalar()) failExpected(field, "a name");
+  return field.node.scalar();
 }
 
 float readNonNegative(const Field& field) { return readNumber(field, Bound::NonNegative); }
@@ -242,10 +225,11 @@ int readPositiveWholeNumber(const Field& field) { return readWholeNumber(field, 
 
 std::vector<Field> readList(const Field& field, std::string_view expectation, std::string itemName,
                             std::size_t minItems, std::size_t maxItems) {
-  if (!field.node.IsSequence() || field.node.size() < minItems || field.node.size() > maxItems)
+  if (!field.node.isSequence() || field.node.size() < minItems || field.node.size() > maxItems)
     failExpected(field, expectation);
   std::vector<Field> items;
-  for (const YAML::Node& item : field.node) items.push_back(makeField(item, itemName, field.mark));
+  for (const YamlNode& item : field.node.items())
+    items.push_back(makeField(item, itemName, field.mark));
   return items;
 }
 
@@ -260,20 +244,20 @@ std::vector<Vec3> readPoints(const Field& field, std::string_view expectation,
 
 std::vector<MapEntry> readMap(const Field& field, std::string_view expectation,
                               std::string_view mapName) {
-  if (!field.node.IsMap()) failExpected(field, expectation);
+  if (!field.node.isMap()) failExpected(field, expectation);
   std::vector<MapEntry> entries;
-  for (const auto& keyAndValue : field.node) {
-    const YAML::Node& key = keyAndValue.first;
-    if (!key.IsScalar())
-      failAt(key.Mark(),
+  for (const auto& keyAndValue : field.node.entries()) {
+    const YamlNode& key = keyAndValue.first;
+    if (!key.isScalar())
+      failAt(key.mark(),
              "a key in " + std::string(mapName) + " is " + describe(key) + "; expected a name");
     const bool repeated = std::any_of(entries.begin(), entries.end(), [&](const MapEntry& entry) {
-      return entry.key == key.Scalar();
+      return entry.key == key.scalar();
     });
     if (repeated)
-      failAt(key.Mark(), "duplicate key " + quoted(key.Scalar()) + " in " + std::string(mapName) +
+      failAt(key.mark(), "duplicate key " + quoted(key.scalar()) + " in " + std::string(mapName) +
                              "; a key may appear only once");
-    entries.push_back(MapEntry{key.Scalar(), key.Mark(), keyAndValue.second});
+    entries.push_back(MapEntry{key.scalar(), key.mark(), keyAndValue.second});
   }
   return entries;
 }
@@ -308,7 +292,7 @@ MapEntry readKindAndProperties(const Field& item, std::string_view kindWord,
   const std::string expectation = "a map with one key naming the " + std::string(kindWord) + " (" +
                                   joinedWithCommas(kinds) +
                                   ") and its properties indented under it";
-  if (!item.node.IsMap() || item.node.size() != 1) failExpected(item, expectation);
+  if (!item.node.isMap() || item.node.size() != 1) failExpected(item, expectation);
   const MapEntry entry = readMap(item, expectation, item.name).front();
   if (std::find(kinds.begin(), kinds.end(), entry.key) == kinds.end())
     failAt(entry.keyMark, "unknown " + std::string(kindWord) + " '" + entry.key + "'; " +

@@ -4,8 +4,6 @@
 // through a CheckedMap that rejects missing, repeated and unknown keys.
 #pragma once
 
-#include <yaml-cpp/yaml.h>
-
 #include <cstddef>
 #include <limits>
 #include <optional>
@@ -17,48 +15,47 @@
 
 #include "core/color.hpp"
 #include "core/math.hpp"
-#include "io/scene_error.hpp"
+#include "io/yaml_document.hpp"
 
 namespace rise {
-
-// The YAML documents of `text`. Throws SceneError naming `sourceName`, the
-// line and the column of a syntax error, said plainly.
-std::vector<YAML::Node> parseYaml(std::string_view text, const std::string& sourceName);
 
 // A problem at one place in a document; the scene loader adds the file name.
 class YamlValueError : public std::runtime_error {
  public:
-  YamlValueError(const YAML::Mark& mark, const std::string& message)
+  YamlValueError(Mark mark, const std::string& message)
       : std::runtime_error(message), mark_(mark) {}
 
-  const YAML::Mark& mark() const { return mark_; }
+  Mark mark() const { return mark_; }
 
  private:
-  YAML::Mark mark_;
+  Mark mark_;
 };
 
 // One value of the document, what messages call it, and where they point: at
 // the value, or at its key when the value is empty (an empty value has no
-// place of its own; yaml-cpp puts it at whatever follows).
+// place of its own).
 struct Field {
-  YAML::Node node;
+  YamlNode node;
   std::string name;
-  YAML::Mark mark;
+  Mark mark;
 };
 
-Field makeField(const YAML::Node& node, std::string name, const YAML::Mark& keyMark);
+Field makeField(const YamlNode& node, std::string name, Mark keyMark);
 
-[[noreturn]] void failAt(const YAML::Mark& mark, const std::string& message);
+[[noreturn]] void failAt(Mark mark, const std::string& message);
 
 // "expected <expectation> for <field name>, got <what the value is>".
 [[noreturn]] void failExpected(const Field& field, std::string_view expectation);
+
+// A number as people write it: "0.1", "1.7e30".
+std::string shortNumber(double value);
 
 // "a, b, c".
 std::string joinedWithCommas(const std::vector<std::string>& words);
 
 // How a value looks to the person who wrote it: "'abc'", "a list of 2 items",
 // "nothing"...
-std::string describe(const YAML::Node& node);
+std::string describe(const YamlNode& node);
 
 // The candidate closest in spelling to `word`, when it is close enough to be
 // a likely typo: "did you mean 'radius'?"; otherwise the list of candidates.
@@ -75,6 +72,8 @@ std::string readName(const Field& field);
 float readNonNegative(const Field& field);
 float readPositive(const Field& field);
 int readPositiveWholeNumber(const Field& field);
+// A number from `least` to `most`, both included.
+float readNumberFrom(const Field& field, float least, float most);
 
 // One of a fixed set of names, with a suggestion for a misspelt one.
 template <typename Choice>
@@ -103,8 +102,8 @@ std::vector<Vec3> readPoints(const Field& field, std::string_view expectation,
 // appear once in it. Messages call the map `mapName`.
 struct MapEntry {
   std::string key;
-  YAML::Mark keyMark;
-  YAML::Node value;
+  Mark keyMark;
+  YamlNode value;
 };
 std::vector<MapEntry> readMap(const Field& field, std::string_view expectation,
                               std::string_view mapName);
@@ -119,11 +118,11 @@ class CheckedMap {
   Field required(std::string_view key) const;
   std::optional<Field> optional(std::string_view key) const;
   // Where the map is, for a problem with it as a whole.
-  const YAML::Mark& mark() const { return mark_; }
+  Mark mark() const { return mark_; }
 
  private:
   std::string name_;
-  YAML::Mark mark_;
+  Mark mark_;
   std::vector<MapEntry> entries_;
 };
 

@@ -42,6 +42,7 @@
 #include "raster/polygon_relations.hpp"
 #include "raster/transparency.hpp"
 #include "raster/waiting_list.hpp"
+#include "render/render_limits.hpp"
 
 namespace rise {
 
@@ -83,8 +84,10 @@ class DepthSorter {
       : screen_(screen), frame_(frame), steps_(frame.steps()) {
     pieces_.corners = screen.corners;
     pieces_.polygons = screen.polygons;
-    for (const ScreenPolygon& polygon : pieces_.polygons)
+    for (const ScreenPolygon& polygon : pieces_.polygons) {
       extents_.push_back(extentOf(pieces_.cornersOf(polygon)));
+      tolerances_.push_back(kPlaneTolerance * extents_.back().nearest);
+    }
     marked_.assign(pieces_.polygons.size(), false);
   }
 
@@ -97,14 +100,13 @@ class DepthSorter {
     if (steps_) recordInitialOrder(sorted);
     WaitingList waiting(std::move(sorted), extents_);
     std::vector<int> order;
-    std::vector<int> markedThisRound;
     while (!waiting.isEmpty()) {
-      if (!resolveFront(waiting, markedThisRound)) continue;
+      if (!resolveFront(waiting)) continue;
       order.push_back(waiting.front());
       waiting.popFront();
       // A cycle is a polygon moved twice before anything could be painted.
-      for (int piece : markedThisRound) marked_[piece] = false;
-      markedThisRound.clear();
+      for (int piece : markedThisRound_) marked_[piece] = false;
+      markedThisRound_.clear();
     }
     return order;
   }
@@ -118,7 +120,7 @@ class DepthSorter {
   // Checks the front polygon against the polygons after it. Returns true
   // when it can be painted; otherwise it has changed the list (moved a
   // polygon to the front, or split one) and the new front must be checked.
-  bool resolveFront(WaitingList& waiting, std::vector<int>& markedThisRound) {
+  bool resolveFront(WaitingList& waiting) {
     const int p = waiting.front();
     for (std::size_t k = 1; k < waiting.size(); ++k) {
       const int q = waiting.at(k);
@@ -132,16 +134,13 @@ class DepthSorter {
           record(pairStep("move", p, q,
                           "Q cannot be hidden by P (tests 1, 4 or 5 with the roles swapped): Q is "
                           "moved before P and marked"));
-        marked_[q] = true;
-        markedThisRound.push_back(q);
+        mark(q);
         waiting.moveToFront(k);
         return false;
       }
       if (split(p, q, waiting, 0) || split(q, p, waiting, k) ||
-          (marked_[q] && splitAcrossCycle(p, waiting, markedThisRound))) {
-        ++counters_.splits;
+          (marked_[q] && splitAcrossCycle(p, waiting)))
         return false;
-      }
       ++counters_.unresolved;
     }
     return true;
@@ -150,7 +149,9 @@ class DepthSorter {
   // P and Q close a cycle of overlaps, but each lies wholly on one side of
   // the other's plane: cut the cycle at another of its polygons, splitting P
   // along its plane or it along P's.
-  bool splitAcrossCycle(int p, WaitingList& waiting, const std::vector<int>& cycle) {
+  bool splitAcrossCycle(int p, WaitingList& waiting) {
+    // Splitting marks pieces, which joins them to the cycle: walk a copy.
+    const std::vector<int> cycle = markedThisRound_;
     for (int other : cycle) {
       const std::size_t position = waiting.find(other);
       if (position == 0 || position >= waiting.size()) continue;
@@ -160,7 +161,13 @@ class DepthSorter {
   }
 
   bool cannotHide(int p, int q) {
-    ++counters_.comparisons;
+    if (++counters_.comparisons > kMostDepthSortComparisons)
+      throw RenderLimitError("depth sort needs more than " +
+                             std::to_string(kMostDepthSortComparisons) +
+                             " comparisons of pairs of polygons to order this scene's " +
+                             std::to_string(screen_.polygons.size()) +
+                             " polygons; expected a scene it can order within that: render it with "
+                             "z-buffer or scanline, or with fewer polygons (--tessellation)");
     int settledBy = kTestCount;
     for (int test = 0; test < kTestCount && settledBy == kTestCount; ++test)
       if (passes(static_cast<Test>(test), p, q)) settledBy = test;
@@ -185,9 +192,9 @@ class DepthSorter {
       case kYExtent:
         return a.high.y <= b.low.y || b.high.y <= a.low.y;
       case kBehindPlane:
-        return !planeSides(cornersOf(p), planeOf(q)).someInFront;
+        return !planeSides(cornersOf(p), planeOf(q), tolerances_[p]).someInFront;
       case kInFrontOfPlane:
-        return !planeSides(cornersOf(q), planeOf(p)).someBehind;
+        return !planeSides(cornersOf(q), planeOf(p), tolerances_[q]).someBehind;
       case kProjection:
         return !imagesOverlap(cornersOf(p), cornersOf(q));
       case kTestCount:
@@ -201,20 +208,38 @@ class DepthSorter {
     return passes(kDepth, p, q) || passes(kBehindPlane, p, q) || passes(kInFrontOfPlane, p, q);
   }
 
+  void mark(int piece) {
+    marked_[piece] = true;
+    markedThisRound_.push_back(piece);
+  }
+
   // Splits the piece at `position` in the list along `other`'s plane if it
-  // lies on both sides of it, the part behind the plane first.
+  // lies on both sides of it, the part behind the plane first. The pieces
+  // keep the piece's tolerance, so that each lies on one side of that plane
+  // for good (a piece is never cut twice by one plane), and its mark: as
+  // Newell's polygons, a piece of one that was moved is split again, never
+  // moved again, until something is painted.
   bool split(int piece, int other, WaitingList& waiting, std::size_t position) {
     const std::span<const Vec3> corners = cornersOf(piece);
-    if (const PlaneSides sides = planeSides(corners, planeOf(other));
+    const float tolerance = tolerances_[piece];
+    if (const PlaneSides sides = planeSides(corners, planeOf(other), tolerance);
         !(sides.someInFront && sides.someBehind))
       return false;
-    float tolerance = 0.0f;
-    for (const Vec3& corner : corners) tolerance = std::max(tolerance, kPlaneTolerance * corner.z);
     const std::vector<Vec3> copy(corners.begin(), corners.end());
     splitPolygon(copy, planeOf(other), tolerance, front_, behind_);
-    const int face = pieces_.polygons[piece].face;
-    const int behind = addPiece(face, behind_);
-    const int front = addPiece(face, front_);
+    // Where a crossing rounds onto a corner off the plane (the plane nearly
+    // along the edge), the cut cannot part the sides: no split.
+    if (planeSides(behind_, planeOf(other), tolerance).someInFront ||
+        planeSides(front_, planeOf(other), tolerance).someBehind)
+      return false;
+    if (++counters_.splits > kMostDepthSortSplits)
+      throw RenderLimitError("depth sort needs more than " + std::to_string(kMostDepthSortSplits) +
+                             " splits to order this scene's " +
+                             std::to_string(screen_.polygons.size()) +
+                             " polygons; expected a scene it can order within that: render it "
+                             "with z-buffer or scanline");
+    const int behind = addPiece(piece, behind_);
+    const int front = addPiece(piece, front_);
     if (steps_) record(splitStep(piece, other, behind, front));
     waiting.replace(position, behind, front);
     return true;
@@ -259,10 +284,12 @@ class DepthSorter {
     return step;
   }
 
-  int addPiece(int face, std::span<const Vec3> corners) {
-    const int piece = pieces_.addPolygon(face, corners);
+  int addPiece(int parent, std::span<const Vec3> corners) {
+    const int piece = pieces_.addPolygon(pieces_.polygons[parent].face, corners);
     extents_.push_back(extentOf(corners));
+    tolerances_.push_back(tolerances_[parent]);
     marked_.push_back(false);
+    if (marked_[parent]) mark(piece);
     return piece;
   }
 
@@ -278,7 +305,9 @@ class DepthSorter {
   std::int64_t stepsRecorded_ = 0;
   ScreenGeometry pieces_;  // the polygons, then the pieces that splits make
   std::vector<Extent> extents_;
+  std::vector<float> tolerances_;  // how near a plane a piece's corners count as on it
   std::vector<bool> marked_;
+  std::vector<int> markedThisRound_;
   std::vector<Vec3> front_, behind_;
   DepthSortCounters counters_;
 };

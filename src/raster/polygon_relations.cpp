@@ -45,11 +45,10 @@ Extent extentOf(std::span<const Vec3> corners) {
   return extent;
 }
 
-PlaneSides planeSides(std::span<const Vec3> corners, const glm::vec4& plane) {
+PlaneSides planeSides(std::span<const Vec3> corners, const glm::vec4& plane, float tolerance) {
   PlaneSides sides;
   for (const Vec3& corner : corners) {
     const float distance = signedDistance(plane, corner);
-    const float tolerance = kPlaneTolerance * corner.z;
     sides.someInFront |= distance > tolerance;
     sides.someBehind |= distance < -tolerance;
   }

@@ -11,8 +11,9 @@
 
 namespace rise {
 
-// Corners this close to a plane, relative to their inverse depth, are on it:
-// the corners two faces share lie on both faces' planes, up to rounding.
+// Corners this close to a plane, relative to the polygon's nearest inverse
+// depth, are on it: the corners two faces share lie on both faces' planes,
+// up to rounding.
 constexpr float kPlaneTolerance = 1e-5f;
 
 // A polygon's screen extent and depth range (inverse depths: `farthest` is
@@ -31,7 +32,9 @@ struct PlaneSides {
   bool someBehind = false;
 };
 
-PlaneSides planeSides(std::span<const Vec3> corners, const glm::vec4& plane);
+// `tolerance` is the polygon's own: the one its split uses too, so that a
+// piece of a split never lies on both sides of the plane that cut it.
+PlaneSides planeSides(std::span<const Vec3> corners, const glm::vec4& plane, float tolerance);
 
 // Whether the images of two convex polygons overlap by more than a touch
 // (separating axes).

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 #include <stdexcept>
 
@@ -287,6 +288,28 @@ TEST(Accelerators, BreakTiesAsBruteForceDoes) {
       EXPECT_EQ(hit.t, 1.0f);
       EXPECT_EQ(hit.shape, shapes[0].get()) << accelName(accel) << ": the plane is second";
       EXPECT_EQ(hit.primitive, 0) << accelName(accel) << (flipped ? ", flipped" : "");
+    }
+  }
+}
+
+// A NaN or infinite ray, as a shading routine gone wrong could make, meets
+// nothing: every box test would otherwise take it to meet every box.
+TEST(Accelerators, AreSafeAgainstARayOfNonFiniteComponents) {
+  RandomScene random(0);
+  const Scene scene = random.scene();
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<Ray> rays{{{0, 0, -20}, {nan, 0, 1}},       {{nan, 0, -20}, {0, 0, 1}},
+                              {{0, 0, -20}, {kInfinity, 0, 1}}, {{0, -kInfinity, 0}, {0, 1, 0}},
+                              {{0, 0, -20}, {nan, nan, nan}},   {{0, 0, -20}, {0, 0, -kInfinity}}};
+  for (Accel accel : availableAccels()) {
+    const SceneIntersector intersector(scene, accel);
+    const auto structure = buildAccelerator(accel, scene.shapes);
+    for (const Ray& ray : rays) {
+      Hit hit;
+      IntersectionCounters counters;
+      EXPECT_FALSE(structure->nearest(ray, 0.0f, hit, counters)) << accelName(accel);
+      EXPECT_EQ(intersector.transmittance(ray, 0.0f, 100.0f, counters), Color(1.0f))
+          << accelName(accel);
     }
   }
 }

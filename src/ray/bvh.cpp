@@ -166,7 +166,7 @@ bool Bvh::intersectPrimitive(const LeafPrimitive& primitive, const Ray& ray, flo
 template <typename VisitLeaf>
 void Bvh::traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCounters& counters,
                    VisitLeaf&& visitLeaf) const {
-  if (nodes_.empty()) return;
+  if (nodes_.empty() || !isFinite(ray)) return;
   const BoxRay boxRay(ray);
   std::uint64_t boxesTested = 0;
   PendingChild pending[kMaxPendingChildren];

@@ -20,7 +20,8 @@
 // computed once), enters the nearest it meets and keeps the others on a
 // small stack, farthest deepest; once a hit nearer than a kept box's entry
 // is found, that box is skipped. A shadow ray stops at the first opaque
-// primitive it meets.
+// primitive it meets. A ray with a NaN or infinite component meets nothing
+// (its box tests would find it in every box, empty ones too).
 #pragma once
 
 #include <array>

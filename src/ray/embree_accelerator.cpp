@@ -190,6 +190,7 @@ void EmbreeAccelerator::addUserGeometry(unsigned int shape) {
 
 bool EmbreeAccelerator::nearest(const Ray& ray, float tMin, Hit& hit,
                                 IntersectionCounters& counters) const {
+  if (!isFinite(ray)) return false;
   bool found = false;
   for (int shape : unbounded_) found |= shapes_[shape]->intersect(ray, tMin, hit, counters);
   Hit userHit;
@@ -218,6 +219,7 @@ bool EmbreeAccelerator::nearest(const Ray& ray, float tMin, Hit& hit,
 void EmbreeAccelerator::visitCrossings(const Ray& ray, float tMin, float tMax,
                                        CrossingVisitor& visitor,
                                        IntersectionCounters& counters) const {
+  if (!isFinite(ray)) return;
   for (int shape : unbounded_)
     if (crosses(*shapes_[shape], ray, tMin, tMax, counters) && !visitor.crossed(shape)) return;
   QueryContext query = makeQuery(ray, tMin, tMax, counters);

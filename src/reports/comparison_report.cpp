@@ -9,10 +9,13 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "io/atomic_file.hpp"
 #include "io/byte_encoding.hpp"
 
 namespace rise {
 namespace {
+
+constexpr const char* kReports[] = {"results.csv", "results.md", "index.html"};
 
 const double* findValue(const Stats& stats, const std::string& name) {
   for (const auto& [key, value] : stats.entries())
@@ -50,13 +53,6 @@ std::string escapeHtml(const std::string& text) {
     }
   }
   return escaped;
-}
-
-void writeText(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream file(path);
-  file << text;
-  if (!file)
-    throw std::runtime_error(path.string() + ": cannot write (" + std::strerror(errno) + ")");
 }
 
 std::string csv(const std::vector<ComparedRender>& renders, const std::vector<std::string>& names) {
@@ -202,6 +198,15 @@ void addSameImageCounters(std::vector<ComparedRender>& renders, Encoding encodin
   }
 }
 
+std::vector<std::filesystem::path> comparisonFiles(
+    const std::filesystem::path& directory, const std::vector<std::string_view>& algorithms) {
+  std::vector<std::filesystem::path> files;
+  for (std::string_view algorithm : algorithms)
+    files.push_back(directory / (std::string(algorithm) + ".png"));
+  for (const char* report : kReports) files.push_back(directory / report);
+  return files;
+}
+
 std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& directory,
                                                    const std::string& sceneName,
                                                    const std::vector<ComparedRender>& renders,
@@ -211,21 +216,17 @@ std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& 
   if (error)
     throw std::runtime_error(directory.string() + ": cannot create (" + error.message() + ")");
 
-  std::vector<std::filesystem::path> written;
-  for (const ComparedRender& render : renders) {
-    written.push_back(directory / (std::string(render.algorithm->name) + ".png"));
-    writeImage(render.result.image, written.back(), encoding);
-  }
+  std::vector<std::string_view> algorithms;
+  for (const ComparedRender& render : renders) algorithms.push_back(render.algorithm->name);
+  const std::vector<std::filesystem::path> files = comparisonFiles(directory, algorithms);
+  for (std::size_t i = 0; i < renders.size(); ++i)
+    writeImage(renders[i].result.image, files[i], encoding);
   const std::vector<std::string> names = statisticNames(renders);
-  const std::pair<const char*, std::string> reports[] = {
-      {"results.csv", csv(renders, names)},
-      {"results.md", markdown(sceneName, renders, names)},
-      {"index.html", html(sceneName, renders, names)}};
-  for (const auto& [file, text] : reports) {
-    written.push_back(directory / file);
-    writeText(written.back(), text);
-  }
-  return written;
+  const std::string reports[] = {csv(renders, names), markdown(sceneName, renders, names),
+                                 html(sceneName, renders, names)};
+  for (std::size_t i = 0; i < std::size(reports); ++i)
+    writeFileAtomically(files[renders.size() + i], reports[i]);
+  return files;
 }
 
 }  // namespace rise

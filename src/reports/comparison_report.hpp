@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/image_io.hpp"
@@ -36,12 +37,17 @@ std::string statisticCell(const Stats& stats, const std::string& name);
 // faster it was, "speedup_over_<other>".
 void addSameImageCounters(std::vector<ComparedRender>& renders, Encoding encoding);
 
+// The files writeComparison writes for these algorithms, images first.
+std::vector<std::filesystem::path> comparisonFiles(const std::filesystem::path& directory,
+                                                   const std::vector<std::string_view>& algorithms);
+
 // Writes, into `directory`, each algorithm's image (<algorithm>.png), the
 // times and counters of all of them as results.csv (one row an algorithm)
 // and results.md (one row a counter, one column an algorithm, for reading),
 // and index.html, which shows the images side by side above the table and a
-// bar chart of the times. Returns the files written. Throws ImageFileError
-// or std::runtime_error when a file cannot be written.
+// bar chart of the times, each file whole or not at all. Returns the files
+// written. Throws ImageFileError, OutputFileError or std::runtime_error when
+// a file cannot be written.
 std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& directory,
                                                    const std::string& sceneName,
                                                    const std::vector<ComparedRender>& renders,

@@ -13,6 +13,11 @@
 
 namespace rise {
 
+// The longest side of an image, in pixels: its pixels then count within an
+// int, and a render's memory is checked against the machine's besides
+// (render/render_limits.hpp).
+inline constexpr int kLargestImageSide = 32768;
+
 // The image a scene asks for; the command line may override its size.
 struct ImageSpec {
   int width = 640;
@@ -32,6 +37,9 @@ struct Scene {
   std::vector<std::unique_ptr<Light>> lights;
   std::vector<Material> materials;
   std::vector<std::unique_ptr<Shape>> shapes;
+  // What loading accepted with a fix, one line each for the person who wrote
+  // the scene: "scene.yaml:9:20: warning: ...".
+  std::vector<std::string> warnings;
   // Each shape as the scene file names it, "sphere at line 16", for the
   // explanations; empty for a scene built in code.
   std::vector<std::string> shapeNames;

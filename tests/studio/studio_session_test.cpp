@@ -221,17 +221,17 @@ double-click objects/1/sphere/radius
 type -1
 key enter
 frames 2
-expect-refused classic.yaml:21:43: 'radius' in sphere is -1; expected a number > 0
+expect-refused classic.yaml:25:43: 'radius' in sphere is -1; expected a number > 0
 expect-value objects/1/sphere/radius 1
 set objects/1/sphere/radius abc
-expect-refused classic.yaml:21:43: 'radius' in sphere is 'abc'; expected a number > 0
+expect-refused classic.yaml:25:43: 'radius' in sphere is 'abc'; expected a number > 0
 set objects/1/sphere/material plastic
 expect-refused undefined material 'plastic' in sphere; expected one of: red, mirror, glass, floor
 expect-value objects/1/sphere/material glass
 replace-text radius: 1, material: glass}|radius: [1, material: glass}
 click Apply
 frames 2
-expect-problem 21 62
+expect-problem 25 62
 expect-refused invalid YAML: unexpected '}'; check that the brackets before it are closed in order
 expect-value objects/1/sphere/radius 1
 set objects/1/sphere/radius 0.5
@@ -255,8 +255,8 @@ TEST_F(Studio, OpensASceneThatDoesNotLoad) {
   // after saying what to do with the changes.
   EXPECT_EQ(runSession(R"(open ${OUT}/broken.yaml
 frames 2
-expect-problem 21 43
-expect-refused broken.yaml:21:43: 'radius' in sphere is -1; expected a number > 0
+expect-problem 25 43
+expect-refused broken.yaml:25:43: 'radius' in sphere is -1; expected a number > 0
 click Render
 frames 2
 replace-text radius: -1,|radius: 2,
@@ -279,7 +279,7 @@ TEST_F(Studio, KeepsDrawingWhileRenderingAndCancelsQuickly) {
   EXPECT_EQ(runSession(R"(open ${RISE_SOURCE_DIR}/examples/classic.yaml
 setting width 2400
 setting height 1800
-setting samples 1
+setting samples 16
 click Render
 frames 5
 expect-frames 2 1

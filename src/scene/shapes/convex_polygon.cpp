@@ -33,10 +33,6 @@ Vec3 doubleAreaVector(const std::vector<Vec3>& vertices) {
   return sum;
 }
 
-bool isFinite(const Vec3& v) {
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
-
 float largestDistanceFromFirst(const std::vector<Vec3>& vertices) {
   float largest = 0.0f;
   for (const Vec3& v : vertices) largest = std::max(largest, glm::length(v - vertices[0]));

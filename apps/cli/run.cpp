@@ -4,8 +4,11 @@
 //
 // Exit status: 0 done, 1 an output file could not be written, 2 bad input
 // (a scene file error or a wrong option); on status 2 no image is written.
+#include "run.hpp"
+
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <optional>
 #include <variant>
 
 #include "algorithms/registry.hpp"
@@ -74,25 +77,39 @@ int render(const RenderOptions& options, const CLI::App& command) {
       return kExitBadInput;
     }
   }
-  std::variant<Job, int> prepared = prepare(options.settings);
+  const std::filesystem::path output =
+      options.output.empty() ? defaultOutput(options.settings.scenePath, ".png") : options.output;
+  try {
+    checkImageFormat(output);
+  } catch (const ImageFileError& error) {
+    std::cerr << "rise: -o " << error.what() << "\n";
+    return kExitBadInput;
+  }
+  std::vector<PlannedOutput> outputs{{output, "-o"}};
+  for (const std::string& name : options.buffers)
+    outputs.push_back({bufferPath(output, name), "--aov " + name});
+  if (!options.statsPath.empty()) outputs.push_back({options.statsPath, "--stats"});
+  if (!outputsAreWritable(outputs, options.settings.scenePath)) return kExitBadInput;
+
+  std::variant<Job, int> prepared = prepare(options.settings, {algorithm.family});
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   Job& job = std::get<Job>(prepared);
   noteUnreadOptions(command, algorithm);
 
   const std::optional<PixelRect>& tile = job.settings.region;
-  const FrameWriter write = [&](const RenderResult& result, const std::filesystem::path& output) {
+  const FrameWriter write = [&](const RenderResult& result, const std::filesystem::path& file) {
     const RenderDescription description = describe(job, renderer.name());
     try {
-      writeImage(result.image, output, options.encoding);
-      for (const std::string& name : options.buffers) writeBuffer(result, name, output);
-      if (tile) writeTilePlace(output, job.settings, job.scene.source, renderer.name());
+      writeImage(result.image, file, options.encoding);
+      for (const std::string& name : options.buffers) writeBuffer(result, name, file);
+      if (tile) writeTilePlace(file, job.settings, job.scene.source, renderer.name());
       if (!options.statsPath.empty()) writeStatsJson(options.statsPath, description, result.stats);
     } catch (const std::exception& error) {
       std::cerr << "rise: " << error.what() << "\n";
       return kExitOutputError;
     }
     printStats(std::cerr, description, result.stats);
-    std::cerr << "wrote " << output.string() << "\n";
+    std::cerr << "wrote " << file.string() << "\n";
     return 0;
   };
   if (options.animation.requested()) {
@@ -100,30 +117,51 @@ int render(const RenderOptions& options, const CLI::App& command) {
         options.output.empty() ? defaultFramePattern(options.settings.scenePath) : options.output;
     return renderFrames(renderer, job, options.animation, pattern, write);
   }
-  return write(renderWithProgress(renderer, job),
-               !options.output.empty() ? options.output
-               : tile                  ? defaultTileOutput(options.settings.scenePath, *tile)
-                                       : defaultOutput(options.settings.scenePath, ".png"));
+  const std::optional<RenderResult> rendered = renderWithProgress(renderer, job);
+  if (!rendered) return kExitBadInput;
+  return write(*rendered, !options.output.empty() ? options.output
+                          : tile ? defaultTileOutput(options.settings.scenePath, *tile)
+                                 : output);
 }
 
 int compare(const CompareOptions& options) {
-  std::variant<Job, int> prepared = prepare(options.settings);
+  std::vector<const Renderer*> renderers;
+  std::vector<std::string_view> names;
+  std::vector<Family> families;
+  for (const Renderer* renderer : allRenderers()) {
+    if (!options.algorithms.empty() &&
+        std::find(options.algorithms.begin(), options.algorithms.end(), renderer->name()) ==
+            options.algorithms.end())
+      continue;
+    renderers.push_back(renderer);
+    names.push_back(renderer->name());
+    families.push_back(renderer->description().family);
+  }
+  const std::filesystem::path directory =
+      options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
+  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory)) {
+    std::cerr << "rise: -o " << directory.string() << ": is a file; expected a folder to write "
+              << "the comparison into\n";
+    return kExitBadInput;
+  }
+  std::vector<PlannedOutput> outputs;
+  for (const std::filesystem::path& file : comparisonFiles(directory, names))
+    outputs.push_back({file, "-o " + directory.string() + " (" + file.filename().string() + ")"});
+  if (!outputsAreWritable(outputs, options.settings.scenePath, true)) return kExitBadInput;
+
+  std::variant<Job, int> prepared = prepare(options.settings, families);
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   const Job& job = std::get<Job>(prepared);
 
   std::vector<ComparedRender> renders;
-  for (const Renderer* renderer : allRenderers()) {
-    const std::string name(renderer->name());
-    if (!options.algorithms.empty() &&
-        std::find(options.algorithms.begin(), options.algorithms.end(), name) ==
-            options.algorithms.end())
-      continue;
-    renders.push_back({&renderer->description(), renderWithProgress(*renderer, job)});
-    std::cerr << name << ": " << renders.back().result.stats.value("render_seconds") << " s\n";
+  for (const Renderer* renderer : renderers) {
+    std::optional<RenderResult> rendered = renderWithProgress(*renderer, job);
+    if (!rendered) return kExitBadInput;
+    renders.push_back({&renderer->description(), *std::move(rendered)});
+    std::cerr << renderer->name() << ": " << renders.back().result.stats.value("render_seconds")
+              << " s\n";
   }
   addSameImageCounters(renders, options.encoding);
-  const std::filesystem::path directory =
-      options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
   try {
     writeComparison(directory, job.scene.source, renders, options.encoding);
   } catch (const std::exception& error) {
@@ -134,16 +172,16 @@ int compare(const CompareOptions& options) {
   return 0;
 }
 
+// Loads the scene and checks that its own image can be rendered by every
+// algorithm, as `rise render` would with no options.
 int validate(const std::string& scenePath) {
-  try {
-    const Scene scene = loadScene(scenePath);
-    std::cout << scene.source << ": ok (" << scene.shapes.size() << " objects, "
-              << scene.lights.size() << " lights, " << scene.materials.size() << " materials)\n";
-    return 0;
-  } catch (const SceneError& error) {
-    std::cerr << error.what() << "\n";
-    return kExitBadInput;
-  }
+  std::variant<Job, int> prepared =
+      prepare({scenePath, {}}, {Family::VisibleSurface, Family::RayTracing});
+  if (const int* status = std::get_if<int>(&prepared)) return *status;
+  const Scene& scene = std::get<Job>(prepared).scene;
+  std::cout << scene.source << ": ok (" << scene.shapes.size() << " objects, "
+            << scene.lights.size() << " lights, " << scene.materials.size() << " materials)\n";
+  return 0;
 }
 
 void listAlgorithms() {
@@ -240,6 +278,16 @@ int run(int argc, char** argv) {
   const auto runMerge = addMergeCommand(app);
   const auto runManual = addManualCommand(app);
 
+  // CLI11 takes an unknown first word for a stray argument and asks for a
+  // subcommand; say what was typed and what there is.
+  std::vector<std::string> commands;
+  for (const CLI::App* command : app.get_subcommands({})) commands.push_back(command->get_name());
+  if (argc > 1 && argv[1][0] != '-' &&
+      std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
+    std::cerr << "rise: unknown command '" << argv[1] << "'; expected one of: " << joined(commands)
+              << " (rise --help)\n";
+    return kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -257,5 +305,3 @@ int run(int argc, char** argv) {
 }
 
 }  // namespace rise::cli
-
-int main(int argc, char** argv) { return rise::cli::run(argc, argv); }

@@ -1,0 +1,157 @@
+#include "render/render_limits.hpp"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace rise {
+namespace {
+
+// The film (a weighted sum and a weight), the image, the auxiliary buffers
+// and the images written from them, and for the visible-surface algorithms
+// each pass's own image and buffers and their frame's per-pixel arrays.
+constexpr std::uint64_t kRayTracingBytesPerPixel = 112;
+constexpr std::uint64_t kVisibleSurfaceBytesPerPixel = 200;
+// A primitive in the acceleration structure or as polygons on the screen.
+constexpr std::uint64_t kBytesPerPrimitive = 256;
+
+std::uint64_t bytesPerPixel(Family family) {
+  return family == Family::RayTracing ? kRayTracingBytesPerPixel : kVisibleSurfaceBytesPerPixel;
+}
+
+// The offsets and the other dimensions of a pixel's samples, in each thread.
+std::uint64_t bytesPerSample(const Scene& scene, const RenderSettings& settings) {
+  return 64 + 8 * (scene.lights.size() + 2 * static_cast<std::uint64_t>(settings.maxDepth));
+}
+
+std::uint64_t primitives(const Scene& scene) {
+  std::uint64_t count = 0;
+  for (const auto& shape : scene.shapes)
+    count += static_cast<std::uint64_t>(shape->primitiveCount());
+  return count;
+}
+
+// The first material that both reflects and refracts: its rays branch in two.
+const Material* branchingMaterial(const Scene& scene) {
+  const auto branching =
+      std::find_if(scene.materials.begin(), scene.materials.end(), [](const Material& material) {
+        return material.reflection > 0 && material.transmission > 0;
+      });
+  return branching == scene.materials.end() ? nullptr : &*branching;
+}
+
+// The rays a sample becomes at most: a path down to the maximum depth, or a
+// tree of them where a material branches; each hit with a shadow ray a light.
+double raysPerSample(const Scene& scene, const RenderSettings& settings) {
+  const double hits = branchingMaterial(scene) ? std::exp2(settings.maxDepth) - 1.0
+                                               : static_cast<double>(settings.maxDepth);
+  return hits * (1.0 + static_cast<double>(scene.lights.size()));
+}
+
+std::uint64_t physicalMemory() {
+  const long pages = sysconf(_SC_PHYS_PAGES);
+  const long pageSize = sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || pageSize <= 0) return kMostRenderMemory;
+  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(pageSize);
+}
+
+// The address space the process already takes, from /proc/self/statm.
+std::uint64_t addressSpaceInUse() {
+  std::ifstream statm("/proc/self/statm");
+  std::uint64_t pages = 0;
+  statm >> pages;
+  return pages * static_cast<std::uint64_t>(sysconf(_SC_PAGE_SIZE));
+}
+
+std::string gigabytes(double bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, bytes < 10e9 ? "%.1f GB" : "%.0f GB", bytes / 1e9);
+  return text;
+}
+
+// "640", "1.8e19".
+std::string count(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, value < 1e6 ? "%.0f" : "%.2g", value);
+  std::string written = text;
+  if (const std::size_t plus = written.find("e+"); plus != std::string::npos)
+    written.erase(plus + 1, 1);
+  return written;
+}
+
+std::string samplesAPixel(const RenderSettings& settings) {
+  const int samples = settings.sampling.samples;
+  return std::to_string(samples) + (samples == 1 ? " sample" : " samples") + " a pixel";
+}
+
+}  // namespace
+
+RenderNeeds renderNeeds(const Scene& scene, const RenderSettings& settings, Family family) {
+  const auto pixels = static_cast<std::uint64_t>(settings.width) * settings.height;
+  const auto samples = static_cast<std::uint64_t>(settings.sampling.samples);
+  const auto threads = static_cast<std::uint64_t>(std::max(1, settings.threads));
+  RenderNeeds needs;
+  needs.bytes = pixels * bytesPerPixel(family) +
+                samples * bytesPerSample(scene, settings) * (threads + 1) +
+                primitives(scene) * kBytesPerPrimitive;
+  if (family == Family::RayTracing)
+    needs.rays =
+        static_cast<double>(pixels) * static_cast<double>(samples) * raysPerSample(scene, settings);
+  return needs;
+}
+
+std::uint64_t renderMemoryBudget(std::string* why) {
+  std::uint64_t budget = kMostRenderMemory;
+  std::string reason = "the most a render may take";
+  const auto machine = static_cast<std::uint64_t>(kShareOfMachineMemory * physicalMemory());
+  if (machine < budget) {
+    budget = machine;
+    reason = "3/4 of this machine's " + gigabytes(static_cast<double>(physicalMemory()));
+  }
+  rlimit limit{};
+  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
+    const std::uint64_t inUse = addressSpaceInUse();
+    const std::uint64_t left = limit.rlim_cur > inUse ? limit.rlim_cur - inUse : 0;
+    if (left < budget) {
+      budget = left;
+      reason = "what the address-space limit (ulimit -v) of " +
+               gigabytes(static_cast<double>(limit.rlim_cur)) + " leaves";
+    }
+  }
+  if (why) *why = reason;
+  return budget;
+}
+
+void checkRenderFits(const Scene& scene, const RenderSettings& settings, Family family) {
+  if (settings.threads > kMostThreads)
+    throw RenderLimitError("--threads " + std::to_string(settings.threads) + ": expected at most " +
+                           std::to_string(kMostThreads) + " threads");
+  const RenderNeeds needs = renderNeeds(scene, settings, family);
+  std::string why;
+  const std::uint64_t budget = renderMemoryBudget(&why);
+  if (needs.bytes > budget)
+    throw RenderLimitError(
+        "a " + std::to_string(settings.width) + " x " + std::to_string(settings.height) +
+        " image with " + samplesAPixel(settings) + " needs about " +
+        gigabytes(static_cast<double>(needs.bytes)) + " to render, more than the " +
+        gigabytes(static_cast<double>(budget)) + " it may take (" + why +
+        "); expected a smaller image (--width, --height or the scene's 'width' and "
+        "'height')");
+  if (needs.rays > kMostRays) {
+    const Material* branching = branchingMaterial(scene);
+    throw RenderLimitError(
+        "a " + std::to_string(settings.width) + " x " + std::to_string(settings.height) +
+        " image with " + samplesAPixel(settings) + " and --max-depth " +
+        std::to_string(settings.maxDepth) + " may trace up to " + count(needs.rays) + " rays (" +
+        count(raysPerSample(scene, settings)) + " a sample" +
+        (branching ? ", as material '" + branching->name + "' both reflects and refracts" : "") +
+        "); expected at most " + count(kMostRays) +
+        " rays: fewer samples, a smaller image or a lower --max-depth");
+  }
+}
+
+}  // namespace rise

@@ -1,0 +1,61 @@
+// The limits of a render: what RISE refuses before it starts, or stops when
+// it is reached, so that no scene and no setting makes a render run for
+// days or fill the memory. Each is documented in the README's Limits.
+//
+// Before a render, what it needs is worked out from its settings: the
+// memory of the film, the image and the auxiliary buffers (so many bytes a
+// pixel), of each thread's samples of a pixel, and of the scene's
+// primitives in the structures built from them; and, for the ray tracers,
+// the most rays a sample can become where materials both reflect and refract
+// (each hit then spawns two rays, down to the maximum depth). Those are held
+// against the memory a render may take and the most rays a render may trace.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "render/renderer.hpp"
+
+namespace rise {
+
+// A render that would exceed a limit; the message names the value and the
+// limit, and what to do instead. The command line exits with status 2.
+class RenderLimitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// The memory a render may take at most, whatever the machine.
+inline constexpr std::uint64_t kMostRenderMemory = 64'000'000'000;
+// Of the machine's memory, the share a render may take.
+inline constexpr double kShareOfMachineMemory = 0.75;
+// Rays at some ten million a second: a day and more.
+inline constexpr double kMostRays = 1e12;
+// Threads beyond the cores only wait; each takes a stack of its own.
+inline constexpr int kMostThreads = 256;
+
+// Depth sort compares pairs of polygons, as many as the square of their
+// number for a scene where every polygon overlaps every other, and splits
+// those it cannot order: about a minute of comparisons, and the pieces of
+// some hundreds of megabytes.
+inline constexpr std::uint64_t kMostDepthSortComparisons = 2'000'000'000;
+inline constexpr std::uint64_t kMostDepthSortSplits = 2'000'000;
+
+// What a render of `family` needs, worked out before it starts.
+struct RenderNeeds {
+  std::uint64_t bytes = 0;
+  double rays = 0.0;  // the most the ray tracers may trace; 0 for the others
+};
+RenderNeeds renderNeeds(const Scene& scene, const RenderSettings& settings, Family family);
+
+// The memory a render may take here: the least of kMostRenderMemory, the
+// share of the machine's memory, and what the address-space limit of the
+// process (ulimit -v) leaves of it. `why` says which it is.
+std::uint64_t renderMemoryBudget(std::string* why = nullptr);
+
+// Throws RenderLimitError when a render of `family` needs more than its
+// limits allow, or asks for more than kMostThreads threads.
+void checkRenderFits(const Scene& scene, const RenderSettings& settings, Family family);
+
+}  // namespace rise

@@ -1,0 +1,82 @@
+#include "render/render_limits.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace rise {
+namespace {
+
+RenderSettings settingsOf(int width, int height, int samples = 1, int maxDepth = 5) {
+  RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.sampling.samples = samples;
+  settings.sampling.pattern = samples > 1 ? SamplePattern::Jittered : SamplePattern::None;
+  settings.maxDepth = maxDepth;
+  settings.threads = 2;
+  return settings;
+}
+
+std::string refusal(const Scene& scene, const RenderSettings& settings, Family family) {
+  try {
+    checkRenderFits(scene, settings, family);
+  } catch (const RenderLimitError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(RenderLimits, NeedsGrowWithThePixelsAndTheSamples) {
+  const Scene scene;
+  const RenderNeeds small = renderNeeds(scene, settingsOf(640, 480), Family::RayTracing);
+  const RenderNeeds large = renderNeeds(scene, settingsOf(1280, 960), Family::RayTracing);
+  EXPECT_GT(large.bytes, 3 * small.bytes);
+  EXPECT_GT(renderNeeds(scene, settingsOf(640, 480), Family::VisibleSurface).bytes, small.bytes);
+  EXPECT_EQ(large.rays, 4 * small.rays);
+  EXPECT_EQ(renderNeeds(scene, settingsOf(640, 480, 16), Family::RayTracing).rays, 16 * small.rays);
+  EXPECT_EQ(renderNeeds(scene, settingsOf(640, 480), Family::VisibleSurface).rays, 0.0);
+}
+
+TEST(RenderLimits, TheBudgetIsNeverMoreThanTheDocumentedLimit) {
+  std::string why;
+  const std::uint64_t budget = renderMemoryBudget(&why);
+  EXPECT_GT(budget, 0u);
+  EXPECT_LE(budget, kMostRenderMemory);
+  EXPECT_FALSE(why.empty());
+}
+
+TEST(RenderLimits, RefusesAnImageLargerThanTheMemoryNamingItsSize) {
+  const Scene scene;
+  EXPECT_EQ(refusal(scene, settingsOf(640, 480), Family::VisibleSurface), "");
+  const std::string message = refusal(scene, settingsOf(32768, 32768), Family::VisibleSurface);
+  EXPECT_EQ(message.substr(0, 63),
+            "a 32768 x 32768 image with 1 sample a pixel needs about 215 GB ")
+      << message;
+}
+
+TEST(RenderLimits, RefusesRayTreesThatBranchPastTheLimit) {
+  Scene scene;
+  scene.materials.resize(1);
+  scene.materials[0].name = "glass";
+  scene.materials[0].reflection = 0.1f;
+  scene.materials[0].transmission = 0.9f;
+  EXPECT_EQ(refusal(scene, settingsOf(640, 480, 1, 20), Family::RayTracing), "");
+  EXPECT_EQ(refusal(scene, settingsOf(640, 480, 1, 64), Family::VisibleSurface), "");
+  EXPECT_EQ(refusal(scene, settingsOf(640, 480, 1, 64), Family::RayTracing),
+            "a 640 x 480 image with 1 sample a pixel and --max-depth 64 may trace up to 5.7e24 "
+            "rays (1.8e19 a sample, as material 'glass' both reflects and refracts); expected at "
+            "most 1e12 rays: fewer samples, a smaller image or a lower --max-depth");
+  scene.materials[0].reflection = 0.0f;  // a path, not a tree
+  EXPECT_EQ(refusal(scene, settingsOf(640, 480, 1, 64), Family::RayTracing), "");
+}
+
+TEST(RenderLimits, RefusesMoreThreadsThanTheLimit) {
+  RenderSettings settings = settingsOf(64, 48);
+  settings.threads = kMostThreads + 1;
+  EXPECT_EQ(refusal(Scene(), settings, Family::RayTracing),
+            "--threads 257: expected at most 256 threads");
+}
+
+}  // namespace
+}  // namespace rise

@@ -1,0 +1,79 @@
+// Inputs beyond what RISE reads: scene files, models and images that never
+// end (/dev/zero), are too large, or promise more pixels than RISE decodes,
+// are refused at once with the limit, and unreadable images are explained
+// in the user's words with the decoder's after them.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "io/file_limits.hpp"
+#include "io/image_io.hpp"
+#include "io/mesh_file.hpp"
+#include "io/scene_file.hpp"
+#include "support/png_header_testing.hpp"
+#include "support/temporary_folder_testing.hpp"
+
+namespace rise {
+namespace {
+
+namespace fs = std::filesystem;
+
+template <typename Error, typename Load>
+std::string errorOf(Load load) {
+  try {
+    load();
+  } catch (const Error& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+TEST(InputLimits, AStreamThatNeverEndsIsNotASceneFile) {
+  EXPECT_EQ(errorOf<SceneError>([] { loadSceneFile("/dev/zero"); }),
+            "/dev/zero: the scene file is larger than the 16 MB that RISE reads; expected a "
+            "scene, with large meshes in model files (mesh: {file})");
+  std::istringstream large(std::string(kLargestSceneFile + 1, '#'));
+  EXPECT_EQ(errorOf<SceneError>([&] { loadSceneStream(large, "<stdin>"); }).substr(0, 45),
+            "<stdin>: the scene file is larger than the 16");
+}
+
+TEST(InputLimits, ADeviceIsNotAModelOrAnImage) {
+  const std::string notRegular = "not a regular file (a device or a pipe); expected a file on disk";
+  EXPECT_EQ(errorOf<MeshFileError>([] { loadMeshFile("/dev/zero"); }), notRegular);
+  EXPECT_EQ(errorOf<ImageFileError>([] { readImage("/dev/urandom"); }),
+            "/dev/urandom: " + notRegular);
+}
+
+class ImageLimits : public TemporaryFolderTest {
+ protected:
+  fs::path write(const std::string& name, const std::string& bytes) const {
+    std::ofstream(directory_ / name, std::ios::binary) << bytes;
+    return directory_ / name;
+  }
+};
+
+TEST_F(ImageLimits, AnImageOfMorePixelsThanRiseReadsIsRefusedBeforeItIsDecoded) {
+  const fs::path huge = write("huge.png", pngHeader(10000, 10000));
+  EXPECT_EQ(errorOf<ImageFileError>([&] { readImage(huge); }),
+            huge.string() +
+                ": the image is 10000 x 10000 pixels, more than the 33554432 (8192 x 4096) that "
+                "RISE reads");
+}
+
+TEST_F(ImageLimits, ADecoderFailureIsSaidInTheUsersWords) {
+  const fs::path cut = write("cut.png", pngHeader(4, 4));
+  EXPECT_EQ(
+      errorOf<ImageFileError>([&] { readImage(cut); }),
+      cut.string() + ": the image data is corrupt or cut short (stb_image: unknown PNG chunk '')");
+  const fs::path text = write("text.png", "not an image at all");
+  EXPECT_EQ(errorOf<ImageFileError>([&] { readImage(text); }),
+            text.string() +
+                ": not an image in a format RISE reads (PNG, JPEG, TGA, BMP, GIF, PSD, PNM, HDR, "
+                "PCX) (stb_image: unknown image type)");
+}
+
+}  // namespace
+}  // namespace rise
