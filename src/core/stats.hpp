@@ -19,13 +19,13 @@ class Stats {
   // Adds each of `other`'s values to the value of the same name, or appends
   // it: the counters of several passes summed.
   void accumulate(const Stats& other) {
-    for (const auto& [name, value] : other.entries_) {
+    for (const auto& added : other.entries_) {
       auto same = std::find_if(entries_.begin(), entries_.end(),
-                               [&](const auto& entry) { return entry.first == name; });
+                               [&](const auto& entry) { return entry.first == added.first; });
       if (same == entries_.end())
-        entries_.emplace_back(name, value);
+        entries_.push_back(added);
       else
-        same->second += value;
+        same->second += added.second;
     }
   }
 

@@ -248,7 +248,9 @@ SceneDocument SceneDocument::without(std::string_view path) const {
   const std::vector<YAML::Node> chain = chainTo(tree_->root, path);
   if (chain.size() < 2 || !chain.back().IsDefined()) failNoEntry(path);
   if (chain[chain.size() - 2].IsSequence()) {
-    const auto [listPath, index] = listAndIndex(tree_->root, path);
+    const std::pair<std::string, std::size_t> item = listAndIndex(tree_->root, path);
+    const std::string& listPath = item.first;
+    const std::size_t index = item.second;
     return rewritten([&](Tree& tree) {
       setEntry(
           tree.root, listPath,
@@ -265,7 +267,9 @@ SceneDocument SceneDocument::without(std::string_view path) const {
 }
 
 SceneDocument SceneDocument::withCopy(std::string_view itemPath) const {
-  const auto [listPath, index] = listAndIndex(tree_->root, itemPath);
+  const std::pair<std::string, std::size_t> item = listAndIndex(tree_->root, itemPath);
+  const std::string& listPath = item.first;
+  const std::size_t index = item.second;
   return rewritten([&](Tree& tree) {
     const YAML::Node list = nodeAt(tree.root, listPath);
     setEntry(tree.root, listPath, listChanged(list, index + 1, list[index]));

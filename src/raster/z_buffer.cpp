@@ -123,7 +123,10 @@ void blendTransparent(const ScreenGeometry& screen, const PixelRect& band,
         frame.blendVisible(x, y, polygon.face);
         ++counters.blends;
       }
-      if (steps) step.writes.push_back(frame.writeOf(x, y, polygon.face, inverseDepth, inFront));
+      if (!steps) return;
+      // What the pixel shows is the blend.
+      step.writes.push_back(frame.writeOf(x, y, polygon.face, inverseDepth, inFront));
+      if (inFront) step.writes.back().color = frame.image().at(x, y);
     });
     if (steps) steps->record(std::move(step), stepOf[index], band.y0);
   }
