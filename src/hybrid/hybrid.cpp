@@ -7,8 +7,7 @@
 // Most of a ray tracer's work in a simple scene is finding what each primary
 // ray hits first: one search of the whole scene a pixel. A scanline pass
 // answers that question for every pixel at once, far more cheaply, and rays
-// are then spent only where the scanline cannot answer: shadows, mirrors,
-// glass.
+// are then spent where the scanline cannot answer: shadows, mirrors, glass.
 //   Pass 1, visibility by scanline: the scanline algorithm (scanline.cpp),
 //     sampling pixel centres where the primary rays pass, fills an item
 //     buffer: the polygon seen at each pixel, and so the object under it and,
@@ -33,10 +32,9 @@
 //            reaches past its polygons. The neighbours of such a pixel are
 //            tested against the same item in turn, so that the test follows
 //            the outline as far out as it reaches.
-// Everywhere else the item buffer's answer is the primary ray's: the same
-// hit, to the bit, and the same colour. (An object whose exact surface shows
-// where none of its polygons is seen nearby, a sliver of a sphere narrower
-// than a pixel, escapes the rule: a few pixels of an image at most.)
+// Everywhere else the item buffer's answer is the primary ray's, to the bit.
+// (A sliver of an exact surface narrower than a pixel, where none of its
+// polygons is seen nearby, escapes the rule: a few pixels at most.)
 //
 // Anti-aliasing, depth of field and motion blur come from the accumulation
 // passes of the visible-surface algorithms (visible_surface_renderer.hpp):

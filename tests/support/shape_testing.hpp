@@ -4,12 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
 
 #include "core/color.hpp"
 #include "scene/shape.hpp"
+#include "scene/tessellation.hpp"
 
 namespace rise::shape_testing {
 
@@ -90,6 +93,17 @@ inline ::testing::AssertionResult misses(const Intersection& result, float tMax 
 inline Vec3 tilted(const Vec3& v) {
   const float s = std::sqrt(0.5f);
   return v.x * Vec3(s, -s, 0.0f) + v.y * Vec3(s, s, 0.0f) + Vec3(0.0f, 0.0f, v.z);
+}
+
+// How far the texture's u runs across one triangle of a tessellation: a
+// triangle that smears the texture across a seam spans nearly all of it.
+inline float uSpan(const Tessellation& tessellation, const std::array<int, 3>& triangle) {
+  float low = kInfinity, high = -kInfinity;
+  for (int corner : triangle) {
+    low = std::min(low, tessellation.vertices[corner].uv.x);
+    high = std::max(high, tessellation.vertices[corner].uv.x);
+  }
+  return high - low;
 }
 
 }  // namespace rise::shape_testing
