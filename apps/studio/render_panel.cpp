@@ -46,6 +46,18 @@ bool choiceCombo(const char* label, Choice& value, const Choices& choices, const
 const auto kPatternName = [](SamplePattern pattern) { return toString(pattern); };
 const auto kFilterName = [](FilterKind filter) { return toString(filter); };
 
+// Shadow maps, with the command line's ranges for their map, bias and filter.
+void drawShadowSettings(RenderSettings& settings) {
+  bool maps = settings.shadows == ShadowMethod::Map;
+  if (ImGui::Checkbox("Shadow maps", &maps))
+    settings.shadows = maps ? ShadowMethod::Map : ShadowMethod::None;
+  if (!maps) return;
+  ImGui::SliderInt("Shadow map size", &settings.shadowMapSize, 16, 8192);
+  ImGui::SliderFloat("Shadow bias (texels)", &settings.shadowBias, 0.0f, 1000.0f, "%g",
+                     ImGuiSliderFlags_Logarithmic);
+  ImGui::SliderInt("Shadow filter radius", &settings.shadowFilter, 0, 16);
+}
+
 }  // namespace
 
 void Studio::drawRenderPanel() {
@@ -136,6 +148,9 @@ void Studio::drawRenderSettings(const AlgorithmDescription& algorithm) {
         break;
       case Option::PlaneSize:
         ImGui::DragFloat("Plane size", &settings.planeSize, 100.0f, 1.0f, 1e7f, "%g");
+        break;
+      case Option::Shadows:
+        drawShadowSettings(settings);
         break;
       case Option::Accel:
         choiceCombo("Acceleration", settings.accel, availableAccels(), accelName);
