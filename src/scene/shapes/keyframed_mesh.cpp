@@ -16,7 +16,7 @@ KeyframedMesh::KeyframedMesh(MeshGeometry start, MeshGeometry end, int material)
 KeyframedMesh::KeyframedMesh(std::vector<MeshGeometry> keyframes, int material)
     : Shape(material), keyframes_(std::move(keyframes)) {
   assert(keyframes_.size() >= 2);
-  for (const MeshGeometry& pose : keyframes_) {
+  for ([[maybe_unused]] const MeshGeometry& pose : keyframes_) {
     assert(pose.triangles == keyframes_[0].triangles);
     assert(pose.positions.size() == keyframes_[0].positions.size());
     assert(pose.normals.size() == keyframes_[0].normals.size());
@@ -49,7 +49,7 @@ SurfacePoint KeyframedMesh::pointOn(int triangle, float time, const Vec2& baryce
   const auto [from, to, fraction] = between(time);
   const auto& [a, b, c] = from.triangles[triangle];
   if (!from.normals.empty()) {
-    const auto normalAt = [&](int vertex) {
+    const auto normalAt = [&, &from = from, &to = to, fraction = fraction](int vertex) {
       return glm::mix(from.normals[vertex], to.normals[vertex], fraction);
     };
     surface.shadingNormal =
