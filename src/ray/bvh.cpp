@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <experimental/simd>
+#include <cstring>
 #include <limits>
 #include <thread>
 
@@ -61,10 +61,22 @@ std::vector<BuildPrimitive> primitivesOf(const std::vector<const Shape*>& shapes
   return primitives;
 }
 
-// Four floats that arithmetic treats at once, as one SIMD register (the
-// data-parallel types of the C++ Parallelism TS 2, in GCC since 11).
-namespace simd = std::experimental;
-using FourFloats = simd::simd<float, simd::simd_abi::deduce_t<float, kWideBvhWidth>>;
+// Four floats that arithmetic treats at once, as one SIMD register: the
+// vector extension GCC and clang share, which compiles `a > b ? a : b` to one
+// instruction on any processor with vectors of four floats.
+using FourFloats = float __attribute__((vector_size(4 * sizeof(float))));
+static_assert(kWideBvhWidth == 4, "a node's boxes fill one FourFloats an axis");
+
+FourFloats broadcast(float value) { return FourFloats{value, value, value, value}; }
+
+FourFloats fourFloatsAt(const float* first) {
+  FourFloats four;
+  std::memcpy(&four, first, sizeof four);
+  return four;
+}
+
+FourFloats maximum(FourFloats a, FourFloats b) { return a > b ? a : b; }
+FourFloats minimum(FourFloats a, FourFloats b) { return a < b ? a : b; }
 
 // A ray made ready for many box tests: the slab test (Kay and Kajiya 1986)
 // divides by the direction, so its inverse is computed once, and along each
@@ -88,20 +100,17 @@ class BoxRay {
   // loses a box the ray grazes. Always inlined: called apart, it would pass
   // its result through memory.
   [[gnu::always_inline]] FourFloats entries(const WideBvhNode& node, float tMin, float tMax) const {
-    FourFloats enter = tMin;
-    FourFloats exit = kInfinity;
+    FourFloats enter = broadcast(tMin);
+    FourFloats exit = broadcast(kInfinity);
     for (int axis = 0; axis < 3; ++axis) {
       const float* nearFaces = entersByMax_[axis] ? node.upper[axis] : node.lower[axis];
       const float* farFaces = entersByMax_[axis] ? node.lower[axis] : node.upper[axis];
-      const FourFloats nearT =
-          (FourFloats(nearFaces, simd::vector_aligned) - origin_[axis]) * inverseDirection_[axis];
-      const FourFloats farT =
-          (FourFloats(farFaces, simd::vector_aligned) - origin_[axis]) * inverseDirection_[axis];
-      enter = simd::max(nearT, enter);
-      exit = simd::min(farT, exit);
+      const FourFloats nearT = (fourFloatsAt(nearFaces) - origin_[axis]) * inverseDirection_[axis];
+      const FourFloats farT = (fourFloatsAt(farFaces) - origin_[axis]) * inverseDirection_[axis];
+      enter = maximum(nearT, enter);
+      exit = minimum(farT, exit);
     }
-    simd::where(!(enter <= simd::min(exit * kRobustExit, FourFloats(tMax))), enter) = kInfinity;
-    return enter;
+    return enter <= minimum(exit * kRobustExit, broadcast(tMax)) ? enter : broadcast(kInfinity);
   }
 
  private:
