@@ -2,9 +2,13 @@
 // job array, and joined into a film.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 
+#include "io/animated_png.hpp"
 #include "io/image_io.hpp"
 #include "support/rise_command_testing.hpp"
 
@@ -20,6 +24,10 @@ class AnimationCommand : public RiseCommand {
                    options);
   }
   Image frame(const std::string& name) { return readImage(file(name), Encoding::Linear); }
+  static std::vector<std::uint8_t> bytesOf(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
 };
 
 TEST_F(AnimationCommand, AJobArrayRendersTheFramesOfOneRun) {
@@ -62,18 +70,39 @@ TEST_F(AnimationCommand, TheOutputNeedsAFrameNumber) {
   EXPECT_NE(result.output.find("expected a frame number"), std::string::npos) << result.output;
 }
 
-TEST_F(AnimationCommand, AVideoJoinsTheFramesWhereFfmpegIsInstalled) {
+TEST_F(AnimationCommand, AVideoJoinsTheFramesWithFfmpegOrIntoAnAnimatedPng) {
   const CommandResult result = renderFrames("--frames 0-2 -o " + file("f_%02d.png").string() +
                                             " --video " + file("film.mp4").string());
+  ASSERT_EQ(result.status, 0) << result.output;
   EXPECT_TRUE(fs::exists(file("f_02.png")));
   if (runCommand("command -v ffmpeg").status != 0) {
-    EXPECT_EQ(result.status, 1);
     EXPECT_NE(result.output.find("ffmpeg is not installed"), std::string::npos) << result.output;
     EXPECT_FALSE(fs::exists(file("film.mp4")));
+    EXPECT_EQ(frame("film.apng").pixels(), frame("f_00.png").pixels());
     return;
   }
-  ASSERT_EQ(result.status, 0) << result.output;
   EXPECT_GT(fs::file_size(file("film.mp4")), 0u);
+}
+
+TEST_F(AnimationCommand, AnAnimatedPngHoldsEveryFrame) {
+  const CommandResult result = renderFrames("--frames 3-5 -o " + file("f_%d.png").string() +
+                                            " --video " + file("film.png").string());
+  ASSERT_EQ(result.status, 0) << result.output;
+  const std::vector<PngChunk> chunks = pngChunks(bytesOf(file("film.png")), file("film.png"));
+  EXPECT_EQ(std::count_if(chunks.begin(), chunks.end(),
+                          [](const PngChunk& chunk) { return chunk.type == "fcTL"; }),
+            3);
+  // A viewer without animation shows the first frame.
+  EXPECT_EQ(frame("film.png").pixels(), frame("f_3.png").pixels());
+}
+
+TEST_F(AnimationCommand, AnAnimatedPngOfOpenExrFramesIsRefusedBeforeRendering) {
+  const CommandResult result = renderFrames("--frames 0-1 -o " + file("f_%d.exr").string() +
+                                            " --video " + file("film.apng").string());
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("an animated PNG is made of PNG frames"), std::string::npos)
+      << result.output;
+  EXPECT_FALSE(fs::exists(file("f_0.exr")));
 }
 
 }  // namespace

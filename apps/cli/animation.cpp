@@ -1,9 +1,14 @@
 #include "animation.hpp"
 
 #include <cstdio>
+#include <cctype>
 #include <cstdlib>
 #include <iostream>
 #include <regex>
+
+#include "io/animated_png.hpp"
+#include "io/atomic_file.hpp"
+#include "io/image_io.hpp"
 
 namespace rise::cli {
 namespace {
@@ -24,6 +29,20 @@ std::string parseRange(const std::string& text, std::vector<int>& range) {
   if (last < first) return "--frames " + text + ": the last frame comes before the first";
   range = {first, last};
   return "";
+}
+
+// A film's frames a second.
+constexpr int kFramesPerSecond = 24;
+
+std::string lowercaseExtension(const fs::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+bool isAnimatedPng(const fs::path& video) {
+  const std::string extension = lowercaseExtension(video);
+  return extension == ".png" || extension == ".apng";
 }
 
 bool ffmpegIsInstalled() { return std::system("command -v ffmpeg > /dev/null 2>&1") == 0; }
@@ -55,7 +74,8 @@ void addAnimationOptions(CLI::App& command, AnimationOptions& options) {
                   "With --frames: the tasks of the job array; each renders every Nth frame")
       ->check(CLI::PositiveNumber);
   command.add_option("--video", options.video,
-                     "With --frames: join the frames into this video (.mp4) with ffmpeg");
+                     "With --frames: join the frames into this film: an animated PNG (.png, "
+                     ".apng), or a video (.mp4) made by ffmpeg, or an animated PNG without it");
 }
 
 std::variant<std::vector<int>, std::string> framesToRender(const AnimationOptions& options,
@@ -94,10 +114,15 @@ fs::path defaultFramePattern(const std::string& scenePath) {
   return name + "_%04d.png";
 }
 
-std::optional<std::string> framePatternProblem(const fs::path& pattern) {
-  if (std::regex_search(pattern.filename().string(), kFrameNumber)) return std::nullopt;
-  return "-o " + pattern.string() +
-         ": expected a frame number in the name, as run_%04d.png, for --frames";
+std::optional<std::string> animationOutputProblem(const fs::path& pattern, const fs::path& video) {
+  if (!std::regex_search(pattern.filename().string(), kFrameNumber))
+    return "-o " + pattern.string() +
+           ": expected a frame number in the name, as run_%04d.png, for --frames";
+  if (!video.empty() && lowercaseExtension(pattern) != ".png" &&
+      (isAnimatedPng(video) || !ffmpegIsInstalled()))
+    return "--video " + video.string() + ": an animated PNG is made of PNG frames, not of " +
+           pattern.filename().string();
+  return std::nullopt;
 }
 
 int renderFrames(const Renderer& renderer, Job& job, const AnimationOptions& options,
@@ -107,7 +132,7 @@ int renderFrames(const Renderer& renderer, Job& job, const AnimationOptions& opt
     std::cerr << "rise: " << *problem << "\n";
     return kExitBadInput;
   }
-  if (const std::optional<std::string> problem = framePatternProblem(pattern)) {
+  if (const std::optional<std::string> problem = animationOutputProblem(pattern, options.video)) {
     std::cerr << "rise: " << *problem << "\n";
     return kExitBadInput;
   }
@@ -123,21 +148,32 @@ int renderFrames(const Renderer& renderer, Job& job, const AnimationOptions& opt
   return writeVideo(pattern, frames, options.video);
 }
 
-int writeVideo(const fs::path& pattern, const std::vector<int>& frames, const fs::path& video) {
-  if (!ffmpegIsInstalled()) {
-    std::cerr << "rise: --video " << video.string()
-              << ": ffmpeg is not installed (Debian: apt install ffmpeg); the frames are written, "
-                 "the video is not\n";
+namespace {
+
+int writeAnimatedPngOf(const std::vector<fs::path>& frames, const fs::path& film) {
+  try {
+    writeAnimatedPng(frames, film, kFramesPerSecond);
+  } catch (const ImageFileError& error) {
+    std::cerr << "rise: --video " << film.string() << ": " << error.what() << "\n";
+    return kExitOutputError;
+  } catch (const OutputFileError& error) {
+    std::cerr << "rise: " << error.what() << "\n";
     return kExitOutputError;
   }
-  // ffmpeg reads the frames through the pattern, from the first, 24 a second;
-  // it writes beside the video and renames, so that no half-written film is left.
-  std::string ffmpegPattern = pattern.string();
+  std::cerr << "wrote " << film.string() << "\n";
+  return 0;
+}
+
+// ffmpeg reads the frames through the pattern, from the first; it writes
+// beside the video and renames, so that no half-written film is left.
+int writeVideoWithFfmpeg(const fs::path& pattern, const std::vector<int>& frames,
+                         const fs::path& video) {
   const fs::path partial = video.parent_path() / (".part." + video.filename().string());
-  const std::string command = "ffmpeg -loglevel error -y -framerate 24 -start_number " +
-                              std::to_string(frames.front()) + " -i " + shellQuoted(ffmpegPattern) +
-                              " -frames:v " + std::to_string(frames.size()) + " -pix_fmt yuv420p " +
-                              shellQuoted(partial.string());
+  const std::string command =
+      "ffmpeg -loglevel error -y -framerate " + std::to_string(kFramesPerSecond) +
+      " -start_number " + std::to_string(frames.front()) + " -i " + shellQuoted(pattern.string()) +
+      " -frames:v " + std::to_string(frames.size()) + " -pix_fmt yuv420p " +
+      shellQuoted(partial.string());
   if (std::system(command.c_str()) != 0) {
     fs::remove(partial);
     std::cerr << "rise: --video " << video.string() << ": ffmpeg failed\n";
@@ -146,6 +182,21 @@ int writeVideo(const fs::path& pattern, const std::vector<int>& frames, const fs
   fs::rename(partial, video);
   std::cerr << "wrote " << video.string() << "\n";
   return 0;
+}
+
+}  // namespace
+
+int writeVideo(const fs::path& pattern, const std::vector<int>& frames, const fs::path& video) {
+  std::vector<fs::path> framePaths;
+  for (int frame : frames) framePaths.push_back(framePath(pattern, frame));
+  if (isAnimatedPng(video)) return writeAnimatedPngOf(framePaths, video);
+  if (ffmpegIsInstalled()) return writeVideoWithFfmpeg(pattern, frames, video);
+  const fs::path film = fs::path(video).replace_extension(".apng");
+  std::cerr << "rise: --video " << video.string()
+            << ": ffmpeg is not installed (Debian: apt install ffmpeg); the frames are joined into "
+               "an animated PNG, "
+            << film.string() << ", instead\n";
+  return writeAnimatedPngOf(framePaths, film);
 }
 
 }  // namespace rise::cli

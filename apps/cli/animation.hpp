@@ -2,7 +2,7 @@
 // that has an `animation` block, each into the file the output pattern names
 // (run_%04d.png); `--array-index I --array-size N` takes every Nth frame of
 // the range from the Ith, so that a job array's tasks share nothing; `--video`
-// joins the frames into a film with ffmpeg.
+// joins the frames into a film: an animated PNG, or a video made by ffmpeg.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -38,8 +38,10 @@ std::filesystem::path framePath(const std::filesystem::path& pattern, int frame)
 // The default pattern: the scene's name, the frame number, .png.
 std::filesystem::path defaultFramePattern(const std::string& scenePath);
 
-// Checks that the pattern has a frame number; the message otherwise.
-std::optional<std::string> framePatternProblem(const std::filesystem::path& pattern);
+// Checks that the pattern has a frame number and that the film asked for, if
+// any, can be made of its frames; the message otherwise.
+std::optional<std::string> animationOutputProblem(const std::filesystem::path& pattern,
+                                                  const std::filesystem::path& video);
 
 // Writes one frame's result to its file; returns an exit status.
 using FrameWriter = std::function<int(const RenderResult&, const std::filesystem::path&)>;
@@ -49,8 +51,10 @@ using FrameWriter = std::function<int(const RenderResult&, const std::filesystem
 int renderFrames(const Renderer& renderer, Job& job, const AnimationOptions& options,
                  const std::filesystem::path& pattern, const FrameWriter& write);
 
-// Joins the frames into a video with ffmpeg; returns an exit status, having
-// said what went wrong.
+// Joins the frames into the film: an animated PNG when its name ends in .png
+// or .apng, otherwise a video made by ffmpeg or, where ffmpeg is not
+// installed, an animated PNG beside it (its name ending in .apng). Returns an
+// exit status, having said what went wrong.
 int writeVideo(const std::filesystem::path& pattern, const std::vector<int>& frames,
                const std::filesystem::path& video);
 

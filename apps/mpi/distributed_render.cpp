@@ -172,7 +172,8 @@ int coordinate(const DistributedRenderOptions& options, int ranks) {
     }
   }
   if (options.animation.requested() && !options.output.empty() && status == 0) {
-    if (const std::optional<std::string> problem = cli::framePatternProblem(options.output)) {
+    if (const std::optional<std::string> problem =
+            cli::animationOutputProblem(options.output, options.animation.video)) {
       std::cerr << "rise-mpi: " << *problem << "\n";
       status = cli::kExitBadInput;
     }
