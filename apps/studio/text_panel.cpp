@@ -44,10 +44,11 @@ void Studio::drawTextPanel() {
   ImGui::SetNextWindowPos({0, 680}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize({400, 300}, ImGuiCond_FirstUseEver);
   ImGui::Begin("Scene text");
-  const bool textRefused = session_.problem() && !session_.refusedText().empty();
+  // Asked anew after Apply and Revert, which may settle the problem.
+  const auto textRefused = [this] { return session_.problem() && !session_.refusedText().empty(); };
   if (!textEdited_ && textRevision_ != session_.revision()) {
-    text_ = textRefused ? session_.refusedText()
-                        : (session_.document() ? session_.document()->text() : std::string());
+    text_ = textRefused() ? session_.refusedText()
+                          : (session_.document() ? session_.document()->text() : std::string());
     textRevision_ = session_.revision();
   }
   const ImGuiIO& io = ImGui::GetIO();
@@ -65,8 +66,8 @@ void Studio::drawTextPanel() {
   if (apply) applyText(text_);
 
   float errorHeight = 0.0f;
-  if (textRefused) errorHeight = ImGui::GetTextLineHeightWithSpacing() * 5;
-  if (!textEdited_ && textRefused) text_ = session_.refusedText();
+  if (textRefused()) errorHeight = ImGui::GetTextLineHeightWithSpacing() * 5;
+  if (!textEdited_ && textRefused()) text_ = session_.refusedText();
   if (pendingCursor_ >= 0) ImGui::SetKeyboardFocusHere();
   if (ImGui::InputTextMultiline(
           "##text", &text_, {-1, -1 - errorHeight},
@@ -75,7 +76,7 @@ void Studio::drawTextPanel() {
     textEdited_ = true;
   textFocused_ = ImGui::IsItemActive();
   track("text");
-  if (textRefused) {
+  if (textRefused()) {
     const Problem& problem = *session_.problem();
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
     ImGui::TextWrapped("%s", problem.message.c_str());
