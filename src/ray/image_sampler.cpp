@@ -16,10 +16,11 @@ AlgorithmDescription rayTracingAlgorithm(std::string_view name, std::string_view
 }
 
 TileTrace::TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers,
-                     StepRecorder* steps)
+                     RenderObserver& observer)
     : area_(area),
       film_(std::move(film)),
-      steps_(steps),
+      observer_(observer),
+      steps_(observer.stepRecorder()),
       depth_(buffers.buffers.at("depth")),
       normal_(buffers.buffers.at("normal")),
       cost_(buffers.buffers.at("cost")) {}
@@ -67,7 +68,7 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
   for (const PixelRect& area : makeTiles(settings.width, settings.height)) {
     FilmTile filmTile = film.tileFor(area);
     if (!filmTile.reach().intersection(settings.area()).isEmpty())
-      tiles.emplace_back(area, std::move(filmTile), result, steps);
+      tiles.emplace_back(area, std::move(filmTile), result, observer);
   }
   Image shown(settings.width, settings.height);
   const Workers workers(settings.threads, observer);

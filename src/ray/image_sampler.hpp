@@ -34,11 +34,14 @@ AlgorithmDescription rayTracingAlgorithm(std::string_view name, std::string_view
 // A tile being traced: where its samples go and what they cost.
 class TileTrace {
  public:
-  TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers, StepRecorder* steps);
+  TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers, RenderObserver& observer);
 
   const PixelRect& area() const { return area_; }
   // Where the ray trees of a pixel are recorded, or nullptr.
   StepRecorder* steps() const { return steps_; }
+  // Asked before each row of the tile: a tile of many samples takes a
+  // noticeable time, and a cancelled render must stop at once.
+  bool cancelled() const { return observer_.cancelled(); }
 
   // A sample taken in `pixel` at `offset` from its top-left corner.
   void addSample(const glm::ivec2& pixel, const Vec2& offset, const Color& color) {
@@ -56,6 +59,7 @@ class TileTrace {
  private:
   PixelRect area_;
   FilmTile film_;
+  const RenderObserver& observer_;
   StepRecorder* steps_;
   Image& depth_;
   Image& normal_;
@@ -77,7 +81,7 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
 template <typename Place, typename Trace>
 void tracePixels(TileTrace& tile, std::uint64_t seed, const Place& place, const Trace& trace) {
   const PixelRect& area = tile.area();
-  for (int y = area.y0; y < area.y1; ++y) {
+  for (int y = area.y0; y < area.y1 && !tile.cancelled(); ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
       const glm::ivec2 pixel(x, y);
       Rng rng(pixelSeed(seed, x, y));

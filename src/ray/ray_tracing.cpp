@@ -287,7 +287,7 @@ void sampleAdaptively(TileTrace& tile, const RenderSettings& settings, const Tra
     return static_cast<std::size_t>(y - area.y0) * (area.width() + 1) + (x - area.x0);
   };
   const int levels = adaptiveLevels(settings.sampling.samples);
-  for (int y = area.y0; y < area.y1; ++y) {
+  for (int y = area.y0; y < area.y1 && !tile.cancelled(); ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
       Rng rng(pixelSeed(settings.seed, x, y), 2);
       const std::uint64_t testsBefore = counters.intersections.tests;
