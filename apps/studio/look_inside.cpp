@@ -49,6 +49,7 @@ void Studio::startPlayer(const RenderJob& job) {
   player_.finalImage = job.result().image;
   player_.background = job.scene()->image.background;
   player_.playing = false;
+  player_.bringForward = true;
   showStep(-1);
 }
 
@@ -89,6 +90,7 @@ void Studio::finishInspection() {
   if (inspection_.job->succeeded()) {
     inspection_.trees = inspection_.job->recorder()->trees();
     inspection_.sample = 0;
+    inspection_.bringForward = true;
     viewport_.showLines(inspection_.trees.empty() ? std::vector<SceneLine>()
                                                   : linesOf(inspection_.trees.front()));
     const std::string pixel =
@@ -128,11 +130,7 @@ void Studio::drawStepOverlay(const Step& step, const ImageViewShown& shown) {
   }
 }
 
-void Studio::drawStepsPanel() {
-  if (player_.steps.empty()) return;
-  ImGui::SetNextWindowPos({400, 20}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({560, 440}, ImGuiCond_FirstUseEver);
-  ImGui::Begin("Steps");
+void Studio::drawSteps() {
   const int count = static_cast<int>(player_.steps.size());
   ImGui::Text("%s: %d steps kept", player_.algorithm.c_str(), count);
   if (ImGui::Button("|<")) showStep(-1);
@@ -202,7 +200,6 @@ void Studio::drawStepsPanel() {
       drawImageView("step image", player_.texture, player_.view, ImGui::GetContentRegionAvail());
   track("step image");
   if (step) drawStepOverlay(*step, shown);
-  ImGui::End();
 }
 
 void Studio::drawRayNode(const RayTree& tree, int ray) {

@@ -8,6 +8,7 @@
 
 #include <charconv>
 #include <cstdlib>
+#include <utility>
 
 #include "studio.hpp"
 
@@ -277,14 +278,43 @@ void Studio::drawField(const std::string& parent, const std::string& key) {
   ImGui::PopID();
 }
 
+// The algorithm's steps share this window with the 3D view, each in a tab of
+// its own: a student switches between them, and neither hides the other.
+// A new recording brings its steps forward; a clicked pixel, the 3D view
+// where its rays are drawn.
 void Studio::drawViewportPanel() {
   ImGui::SetNextWindowPos({400, 20}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize({560, 440}, ImGuiCond_FirstUseEver);
   ImGui::Begin("Viewport");
+  if (player_.steps.empty()) {
+    drawSceneView();
+  } else if (ImGui::BeginTabBar("views")) {
+    const auto selectedIf = [](bool& bringForward) {
+      return std::exchange(bringForward, false) ? ImGuiTabItemFlags_SetSelected
+                                                : ImGuiTabItemFlags_None;
+    };
+    const bool sceneView =
+        ImGui::BeginTabItem("3D view", nullptr, selectedIf(inspection_.bringForward));
+    track("tab/3D view");
+    if (sceneView) {
+      drawSceneView();
+      ImGui::EndTabItem();
+    }
+    const bool steps = ImGui::BeginTabItem("Steps", nullptr, selectedIf(player_.bringForward));
+    track("tab/Steps");
+    if (steps) {
+      drawSteps();
+      ImGui::EndTabItem();
+    }
+    ImGui::EndTabBar();
+  }
+  ImGui::End();
+}
+
+void Studio::drawSceneView() {
   const std::shared_ptr<const Scene> scene = session_.scene();
   if (!scene) {
     ImGui::TextDisabled("No scene.");
-    ImGui::End();
     return;
   }
   int selected = -1;
@@ -300,7 +330,6 @@ void Studio::drawViewportPanel() {
     if (editValue("camera/position", spelt(position, 3)))
       editValue("camera/look_at", spelt(lookAt, 3), true);
   }
-  ImGui::End();
 }
 
 }  // namespace rise::studio

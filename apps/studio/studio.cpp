@@ -27,7 +27,6 @@ bool Studio::frame(bool closeRequested) {
   drawRenderPanel();
   drawComparePanel();
   drawHelpPanel();
-  drawStepsPanel();
   drawRayTreePanel();
   browser_.draw(recent_);
   drawUnsavedQuestion();

@@ -56,7 +56,8 @@ struct StepPlayer {
   ImageViewState view;
   bool playing = false;
   float stepsPerSecond = 10.0f;
-  double due = 0.0;  // steps owed to the playing clock
+  double due = 0.0;           // steps owed to the playing clock
+  bool bringForward = false;  // to its tab, once
 };
 
 // The ray trees of the pixel last clicked in a ray-traced image.
@@ -68,6 +69,7 @@ struct PixelInspection {
   Color pixelColor{0.0f};              // the render's colour there
   std::vector<RayTree> trees;
   int sample = 0;
+  bool bringForward = false;  // the 3D view, where its rays are drawn, once
 };
 
 // The compare panel: the algorithms chosen, rendered one after the other.
@@ -144,6 +146,7 @@ class Studio {
   void drawAddMenu(const std::string& listPath);
   void drawTextPanel();
   void drawViewportPanel();
+  void drawSceneView();
   void drawRenderPanel();
   void drawRenderSettings(const AlgorithmDescription& algorithm);
   void drawRenderImage();
@@ -152,7 +155,7 @@ class Studio {
   void drawCompareTable();
   void drawDifference();
   void drawHelpPanel();
-  void drawStepsPanel();
+  void drawSteps();
   void drawStepOverlay(const Step& step, const ImageViewShown& shown);
   void drawRayTreePanel();
   void drawRayNode(const RayTree& tree, int ray);

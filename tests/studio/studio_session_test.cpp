@@ -48,10 +48,10 @@ class Studio : public TemporaryFolderTest {
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   }
 
-  // Where the session's last `layout` command found each widget.
-  std::map<std::string, std::array<float, 4>> layout() const {
+  // Where the session's `layout` command that wrote `name` found each widget.
+  std::map<std::string, std::array<float, 4>> layout(const std::string& name = "layout.txt") const {
     std::map<std::string, std::array<float, 4>> widgets;
-    std::ifstream file(directory_ / "layout.txt");
+    std::ifstream file(directory_ / name);
     // A line is the widget's name, which may hold spaces, then its four numbers.
     for (std::string line; std::getline(file, line);) {
       std::array<float, 4> box{};
@@ -278,6 +278,42 @@ frames 2
 expect-value camera/fov 46.826449
 )"),
             0);
+}
+
+TEST_F(Studio, ShowsTheStepsAndThe3dViewInTabsOfOneWindow) {
+  // Recorded steps come forward in their tab; a clicked pixel brings the 3D
+  // view, where its rays are drawn, back; neither window covers the other.
+  ASSERT_EQ(runSession(R"(open ${RISE_SOURCE_DIR}/examples/classic.yaml
+click Render
+wait
+algorithm z-buffer
+record-steps on
+click Render
+wait
+frames 2
+layout ${OUT}/steps.txt
+algorithm ray-tracing
+record-steps off
+click Render
+wait
+click-pixel 320 230
+wait
+frames 2
+layout ${OUT}/view.txt
+click tab/Steps
+frames 2
+layout ${OUT}/steps-again.txt
+)"),
+            0);
+  for (const std::string name : {"steps.txt", "steps-again.txt"}) {
+    const auto widgets = layout(name);
+    EXPECT_TRUE(widgets.contains("Play")) << name;
+    EXPECT_TRUE(widgets.contains("step image")) << name;
+    EXPECT_FALSE(widgets.contains("viewport")) << name;
+  }
+  const auto view = layout("view.txt");
+  EXPECT_TRUE(view.contains("viewport"));
+  EXPECT_FALSE(view.contains("Play"));
 }
 
 TEST_F(Studio, KeepsDrawingWhileRenderingAndCancelsQuickly) {
