@@ -284,6 +284,39 @@ TEST_F(MeshFiles, ATruncatedPlyModelIsRefused) {
             "aiMesh::mFaces[69302]::mIndices[0] is out of range)");
 }
 
+TEST_F(MeshFiles, APlyModelWhoseFacesHaveNoCornersIsRefused) {
+  // As a fuzzer made it: faces declared twice, the header's end misspelt and
+  // found later. Assimp reads faces of no corners, which its triangulation
+  // would stop the program on.
+  const std::string noCorners = R"(ply
+format ascii 1.0
+element vertex 4
+property float x
+prpoerty float y
+property float z
+element face 2
+pr
+property float x
+property float y
+property float z
+element face 2
+property list uchar int vertex_indices
+en!_header
+0 0 0
+1 0 0
+1 1operty list uchar int vertex_indices
+end_header
+0 0 0
+1 0 0
+1 1 0
+0 1 0
+3 0 1 2
+3 0 2 3
+)";
+  EXPECT_EQ(reasonLoading(write("no-corners.ply", noCorners)),
+            "face 0 has no corners, as in a corrupt file");
+}
+
 TEST_F(MeshFiles, TruncatedModelsAreRefusedAtEveryLength) {
   // Cuts spread over each file: each must fail with a reason or load, and
   // none may crash or hang.

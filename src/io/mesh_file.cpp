@@ -120,17 +120,51 @@ std::string explained(const std::string& message) {
   return with("the file cannot be read as a model");
 }
 
+// Sets the kinds of faces (points, lines, triangles, polygons) each mesh
+// has to those its faces have. A loader may leave them wrong (a PLY file that
+// declares its faces twice leaves faces of no corners flagged as polygons),
+// and Assimp's triangulation then stops the program on an assertion rather
+// than report an error. Faces of no corners are refused.
+void checkFacesAndTheirTypes(aiScene& scene) {
+  for (unsigned int i = 0; i < scene.mNumMeshes; ++i) {
+    aiMesh& mesh = *scene.mMeshes[i];
+    unsigned int types = 0;
+    for (unsigned int face = 0; face < mesh.mNumFaces; ++face) {
+      switch (mesh.mFaces[face].mNumIndices) {
+        case 0:
+          throw MeshFileError("face " + std::to_string(face) +
+                              " has no corners, as in a corrupt file");
+        case 1:
+          types |= aiPrimitiveType_POINT;
+          break;
+        case 2:
+          types |= aiPrimitiveType_LINE;
+          break;
+        case 3:
+          types |= aiPrimitiveType_TRIANGLE;
+          break;
+        default:
+          types |= aiPrimitiveType_POLYGON;
+      }
+    }
+    mesh.mPrimitiveTypes = types;
+  }
+}
+
 const aiScene& readWithAssimp(Assimp::Importer& importer, const std::filesystem::path& path,
                               int md2Keyframe) {
   importer.SetPropertyInteger(AI_CONFIG_IMPORT_MD2_KEYFRAME, md2Keyframe);
-  // Validation comes first, so that no later step reads a corrupt index;
-  // invalid normals (all zero, NaN) are dropped, to be computed like missing
+  // Validation comes first, so that no later step reads a corrupt index.
+  const aiScene* read = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
+  if (read == nullptr) throw MeshFileError(explained(tidied(importer.GetErrorString())));
+  // The importer owns the scene it read and lets it be changed between steps.
+  checkFacesAndTheirTypes(const_cast<aiScene&>(*read));
+  // Invalid normals (all zero, NaN) are dropped, to be computed like missing
   // ones. RISE computes those itself: Assimp's smoothing cannot split a
   // vertex that faces share across a crease (the corners of an OFF box).
-  unsigned int steps =
-      aiProcess_ValidateDataStructure | aiProcess_Triangulate | aiProcess_FindInvalidData;
+  unsigned int steps = aiProcess_Triangulate | aiProcess_FindInvalidData;
   if (!isMd2File(path)) steps |= aiProcess_JoinIdenticalVertices;
-  const aiScene* scene = importer.ReadFile(path.string(), steps);
+  const aiScene* scene = importer.ApplyPostProcessing(steps);
   if (scene == nullptr) throw MeshFileError(explained(tidied(importer.GetErrorString())));
   return *scene;
 }
