@@ -104,14 +104,6 @@ TEST_P(ExampleScene, RendersWithEveryAlgorithmAtEverySizeInSeconds) {
   }
 }
 
-int pixelsDiffering(const Image& a, const Image& b) {
-  int differing = 0;
-  for (int y = 0; y < a.height(); ++y)
-    for (int x = 0; x < a.width(); ++x)
-      differing += glm::any(glm::greaterThan(glm::abs(a.at(x, y) - b.at(x, y)), Color(0.02f)));
-  return differing;
-}
-
 bool blendsTransparency(std::string_view algorithm) {
   const std::vector<Effect>& effects = findRenderer(algorithm)->description().effects;
   return std::find(effects.begin(), effects.end(), Effect::Transparency) != effects.end();

@@ -147,7 +147,9 @@ TEST(StepRecorder, WarnocksSettledWindowsTileTheScreenOnce) {
 }
 
 // Spans hold (polygon, face, left, right); the buffers runs of (from x, to x,
-// face, w).
+// face, w); the transparent layers, where the row has any, runs of (from x,
+// to x, faces blended farthest first, faces dropped). The face a pixel shows
+// is the nearest blended, or else the buffer's.
 TEST(StepRecorder, TheScanlinesSpansAndBuffersGiveItsFaceBuffer) {
   const Scene scene = example("classic.yaml");
   const RenderSettings settings = small(scene, 96, 72);
@@ -155,31 +157,47 @@ TEST(StepRecorder, TheScanlinesSpansAndBuffersGiveItsFaceBuffer) {
   const RenderResult result = render("scanline", scene, settings, recording);
   const std::vector<Step> steps = recording.recorder.allSteps();
   ASSERT_EQ(steps.size(), static_cast<std::size_t>(settings.height));
+  const auto number = [](const StepCell& cell) { return std::get<double>(cell); };
+  int rowsWithLayers = 0;
   for (int y = 0; y < settings.height; ++y) {
     const Step& step = steps[static_cast<std::size_t>(y)];
     const StepTable& spans = step.tables[2];
     const StepTable& buffers = step.tables[3];
     ASSERT_EQ(spans.title, "spans");
+    std::vector<int> shown(static_cast<std::size_t>(settings.width), -1);
     int x = 0;
-    const auto number = [](const StepCell& cell) { return std::get<double>(cell); };
     for (const std::vector<StepCell>& run : buffers.rows) {
       ASSERT_EQ(number(run[0]), x);
-      const int face = static_cast<int>(number(run[2]));
-      for (; x <= static_cast<int>(number(run[1])); ++x) {
-        ASSERT_EQ(face, faceAt(result, x, y)) << x << "," << y;
-        if (face < 0) continue;
-        // The face seen has a span over the pixel's centre.
-        const double centre = x + 0.5;
-        EXPECT_TRUE(std::any_of(spans.rows.begin(), spans.rows.end(),
-                                [&](const auto& span) {
-                                  return number(span[1]) == face && number(span[2]) <= centre &&
-                                         centre < number(span[3]);
-                                }))
-            << x << "," << y;
-      }
+      for (; x <= static_cast<int>(number(run[1])); ++x)
+        shown[x] = static_cast<int>(number(run[2]));
     }
     EXPECT_EQ(x, settings.width);
+    if (step.tables.size() > 4) {
+      ++rowsWithLayers;
+      for (const std::vector<StepCell>& run : step.tables[4].rows) {
+        const std::string& blended = std::get<std::string>(run[2]);
+        if (blended.empty()) continue;
+        const int nearest = std::stoi(blended.substr(blended.rfind(' ') + 1));
+        for (x = static_cast<int>(number(run[0])); x <= static_cast<int>(number(run[1])); ++x)
+          shown[x] = nearest;
+      }
+    }
+    for (x = 0; x < settings.width; ++x) {
+      const int face = shown[x];
+      ASSERT_EQ(face, faceAt(result, x, y)) << x << "," << y;
+      if (face < 0) continue;
+      // The face seen has a span over the pixel's centre.
+      const double centre = x + 0.5;
+      EXPECT_TRUE(std::any_of(spans.rows.begin(), spans.rows.end(),
+                              [&](const auto& span) {
+                                return number(span[1]) == face && number(span[2]) <= centre &&
+                                       centre < number(span[3]);
+                              }))
+          << x << "," << y;
+    }
   }
+  // The rows through the glass sphere.
+  EXPECT_GT(rowsWithLayers, settings.height / 4);
 }
 
 // The hybrid's first steps are the scanline's, one a scanline, each drawing

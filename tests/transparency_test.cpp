@@ -1,11 +1,15 @@
-// Transparency in depth sort and the z-buffer: coloured transparent squares
-// stacked over a background and over an opaque square give the colour a
-// formula in the test computes, each surface's own light plus what is behind
-// it filtered by its transmission times its colour; and with an index of
-// refraction of 1, which bends no ray, the same image as Whitted's ray
-// tracer, shadows through the squares included.
+// Transparency in depth sort, the z-buffer and the scanline algorithm:
+// coloured transparent squares stacked over a background and over an opaque
+// square give the colour a formula in the test computes, each surface's own
+// light plus what is behind it filtered by its transmission times its colour;
+// with an index of refraction of 1, which bends no ray, the same image as
+// Whitted's ray tracer, shadows through the squares included; and the glass
+// sphere of the classic scene looks the same to the three.
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "io/scene_file.hpp"
 #include "scene/shapes/convex_polygon.hpp"
 #include "support/raster_testing.hpp"
 
@@ -14,7 +18,7 @@ namespace {
 
 using raster_testing::render;
 
-constexpr std::string_view kBlendingAlgorithms[] = {"depth-sort", "z-buffer"};
+constexpr std::string_view kBlendingAlgorithms[] = {"depth-sort", "z-buffer", "scanline"};
 
 // A square of side 2 facing the camera (on -z) at depth z, centred at
 // (x, y), of material `material`.
@@ -48,6 +52,23 @@ void expectNear(const Color& seen, const Color& expected, std::string_view algor
     EXPECT_NEAR(seen[channel], expected[channel], 1e-5f) << algorithm << " channel " << channel;
 }
 
+// The pixel whose centre sees the point `at` of a plane facing the camera
+// (z constant), or the nearest to it.
+Vec2 pixelSeeing(const Scene& scene, const RenderSettings& settings, const Vec3& at) {
+  const ViewFrame view(scene.camera, settings.width, settings.height);
+  const Vec3 eye = scene.camera.position;
+  Vec2 best(0.0f);
+  float nearest = kInfinity;
+  for (int py = 0; py < settings.height; ++py)
+    for (int px = 0; px < settings.width; ++px) {
+      const Ray ray = view.primaryRay(px + 0.5f, py + 0.5f);
+      const Vec3 seen = eye + ray.direction * ((at.z - eye.z) / ray.direction.z);
+      const float distance = glm::length(Vec2(seen.x - at.x, seen.y - at.y));
+      if (distance < nearest) nearest = distance, best = Vec2(px, py);
+    }
+  return best;
+}
+
 // Two transparent squares, one in front of the other and offset, over an
 // opaque one and over the background: the pixels where one, two or three
 // overlap.
@@ -66,22 +87,6 @@ TEST(Transparency, StackedSquaresBlendAsTheFormulaSays) {
   const Color greyLight = ownLight(scene, grey);
   const Color redLight = ownLight(scene, red), blueLight = ownLight(scene, blue);
   const RenderSettings settings = settingsFor(scene);
-  const ViewFrame view(scene.camera, settings.width, settings.height);
-  // The pixel that sees the point (x, y) of the plane z = 0 (between the
-  // squares, and on the blue one).
-  const auto pixelSeeing = [&](float x, float y) {
-    const Vec3 eye = scene.camera.position;
-    Vec2 best(0.0f);
-    float nearest = kInfinity;
-    for (int py = 0; py < settings.height; ++py)
-      for (int px = 0; px < settings.width; ++px) {
-        const Ray ray = view.primaryRay(px + 0.5f, py + 0.5f);
-        const Vec3 at = eye + ray.direction * ((0.0f - eye.z) / ray.direction.z);
-        const float distance = glm::length(Vec2(at.x - x, at.y - y));
-        if (distance < nearest) nearest = distance, best = Vec2(px, py);
-      }
-    return best;
-  };
   struct Probe {
     Vec2 onBluePlane;
     Color expected;
@@ -96,7 +101,7 @@ TEST(Transparency, StackedSquaresBlendAsTheFormulaSays) {
   for (std::string_view algorithm : kBlendingAlgorithms) {
     const RenderResult result = render(algorithm, scene, settings);
     for (const Probe& probe : probes) {
-      const Vec2 pixel = pixelSeeing(probe.onBluePlane.x, probe.onBluePlane.y);
+      const Vec2 pixel = pixelSeeing(scene, settings, Vec3(probe.onBluePlane, 0.0f));
       expectNear(result.image.at(static_cast<int>(pixel.x), static_cast<int>(pixel.y)),
                  probe.expected, algorithm);
     }
@@ -133,6 +138,55 @@ TEST(Transparency, MatchesTheRayTracerWhereNoRayBends) {
       }
     // The shadow's edge on the grey square, a texel or so wide.
     EXPECT_LE(differing, 60) << algorithm;
+  }
+}
+
+// The stack again, the red square now behind the blue one and the grey one
+// in front of both, where it hides them: blended farthest first, and only
+// what lies in front of the opaque surface.
+TEST(Transparency, BlendsByDepthNotByDrawingOrder) {
+  Scene scene = raster_testing::sceneSeenFrom(Vec3(0, 0, -8), 150, 110);
+  scene.ambient = Color(0.8f);
+  scene.materials.push_back(transparent(Color(0.9f, 0.3f, 0.2f), 0.6f));  // 1: red, behind
+  scene.materials.push_back(transparent(Color(0.2f, 0.5f, 0.9f), 0.7f));  // 2: blue, in front
+  addSquare(scene, 0.0f, 0.0f, -1.0f, 2);                                 // blue, drawn first
+  addSquare(scene, 0.2f, 0.1f, 1.0f, 1);
+  addSquare(scene, 1.6f, 0.0f, -2.0f, 0);  // the opaque grey square, in front
+  const Material& grey = scene.materials[0];
+  const Material& red = scene.materials[1];
+  const Material& blue = scene.materials[2];
+  const Color background = scene.image.background;
+  const RenderSettings settings = settingsFor(scene);
+  // The middle of the squares shows blue over red over the background; the
+  // grey square, in front of both where they overlap it, itself alone.
+  const Color centre =
+      over(blue, ownLight(scene, blue), over(red, ownLight(scene, red), background));
+  const Vec2 throughBoth = pixelSeeing(scene, settings, Vec3(0.0f, 0.0f, -1.0f));
+  const Vec2 onGrey = pixelSeeing(scene, settings, Vec3(1.0f, 0.0f, -2.0f));
+  for (std::string_view algorithm : kBlendingAlgorithms) {
+    const RenderResult result = render(algorithm, scene, settings);
+    expectNear(result.image.at(static_cast<int>(throughBoth.x), static_cast<int>(throughBoth.y)),
+               centre, algorithm);
+    expectNear(result.image.at(static_cast<int>(onGrey.x), static_cast<int>(onGrey.y)),
+               ownLight(scene, grey), algorithm);
+  }
+}
+
+// The classic scene's glass sphere, at sizes and shapes other than the
+// example's: the scanline algorithm blends it as the z-buffer does, within
+// the examples' tolerance (a pixel in a hundred).
+TEST(Transparency, TheGlassSphereLooksTheSameToTheScanlineAsToTheZBuffer) {
+  const Scene scene = loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/classic.yaml");
+  for (const auto& [width, height] : {std::pair{150, 61}, std::pair{53, 90}}) {
+    RenderRequest request;
+    request.image = {width, height, 1, SamplePattern::None, FilterKind::Box, {}};
+    const RenderSettings settings = settingsFor(scene, request);
+    const RenderResult scanline = render("scanline", scene, settings);
+    EXPECT_GT(scanline.stats.value("transparent_blends"), 0.0);
+    EXPECT_LE(
+        raster_testing::pixelsDiffering(scanline.image, render("z-buffer", scene, settings).image),
+        width * height / 100)
+        << width << " x " << height;
   }
 }
 

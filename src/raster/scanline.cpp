@@ -26,15 +26,31 @@
 // missed. The image is cut into bands of scanlines that threads sweep in
 // parallel, each band starting its edges at its first scanline, with buffers
 // of its own. Cost of a pixel: the depth tests made at it.
+//
+// Transparency along the spans, after D. S. Kay and D. Greenberg,
+// "Transparency for computer synthesized images", SIGGRAPH 1979: a
+// transparent face does not enter the depth and face buffers; each pixel of
+// the scanline keeps instead the transparent faces met in front of its
+// nearest opaque face so far, with their depths, farthest first. When the
+// scanline is finished, those behind the pixel's final opaque face are
+// dropped and the rest blended over it, farthest first, by the z-buffer's
+// rule (raster/transparency.hpp); "transparent_blends" counts them. The
+// memory stays one scanline wide: the buffers, and a depth and a face for
+// each transparent face kept at a pixel of the most crowded scanline, which
+// "scanline_buffer_bytes" adds.
+// The hybrid algorithm's item buffer, whose rays see through glass, keeps
+// the nearest face, transparent or not.
 #include "raster/scanline.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "raster/bands.hpp"
+#include "raster/transparency.hpp"
 
 namespace rise {
 
@@ -45,7 +61,9 @@ const AlgorithmDescription& ScanlineRenderer::description() const {
       "buffer",
       "M. Dreux, A simple effective linear-growth scanline algorithm, ICONCG 1988; G. "
       "S. Watkins, PhD thesis, University of Utah, 1970; W. J. Bouknight, CACM 13(9), "
-      "1970");
+      "1970; D. S. Kay and D. Greenberg, Transparency for computer synthesized images, "
+      "SIGGRAPH 1979",
+      {Effect::Transparency});
   return description;
 }
 
@@ -57,6 +75,8 @@ struct ScanlineCounters {
   std::uint64_t edges = 0;             // entries of the edge tables
   std::uint64_t activeEdgeVisits = 0;  // active edges, summed over the scanlines
   std::uint64_t activeEdgesMax = 0;
+  std::uint64_t blends = 0;
+  std::uint64_t layersMax = 0;  // transparent faces kept on one scanline, at the most
 
   ScanlineCounters& operator+=(const ScanlineCounters& other) {
     depthTests += other.depthTests;
@@ -64,6 +84,8 @@ struct ScanlineCounters {
     edges += other.edges;
     activeEdgeVisits += other.activeEdgeVisits;
     activeEdgesMax = std::max(activeEdgesMax, other.activeEdgesMax);
+    blends += other.blends;
+    layersMax = std::max(layersMax, other.layersMax);
     return *this;
   }
 };
@@ -81,17 +103,21 @@ int firstScanlineFrom(float y) { return static_cast<int>(std::ceil(y - 0.5f)); }
 
 class BandSweep {
  public:
+  // `blending`, the frame transparent faces are blended on, or nullptr
+  // where every face is drawn as opaque.
   BandSweep(const ScreenGeometry& screen, const PixelRect& band, std::span<const int> polygons,
-            VisibleFaces& faces, ScanlineCounters& counters)
+            VisibleFaces& faces, RasterFrame* blending, ScanlineCounters& counters)
       : screen_(screen),
         band_(band),
         polygons_(polygons),
         faces_(faces),
+        blending_(blending),
         counters_(counters),
         edgeTable_(band.y1 - band.y0),
         lineInverseDepth_(faces.width(), 0.0f),
         lineFace_(faces.width(), -1),
-        lineCost_(faces.width(), 0.0f) {}
+        lineCost_(faces.width(), 0.0f),
+        lineLayers_(blending ? faces.width() : 0) {}
 
   void run() {
     buildEdgeTable();
@@ -160,12 +186,17 @@ class BandSweep {
 
   void drawSpans(int y) {
     forEachSpan([&](int order, float left, float right) {
-      drawSpan(y, screen_.polygons[polygons_[order]].face, left, right);
+      const int face = screen_.polygons[polygons_[order]].face;
+      if (blending_ && blending_->isTransparent(face))
+        drawTransparentSpan(y, face, left, right);
+      else
+        drawSpan(y, face, left, right);
     });
   }
 
-  // The centres x + 1/2 in [left, right).
-  void drawSpan(int y, int face, float left, float right) {
+  // Calls visit(x, inverseDepth) at the centres x + 1/2 in [left, right).
+  template <typename Visit>
+  void forEachCentre(int y, int face, float left, float right, const Visit& visit) {
     const ScreenFace& screenFace = screen_.faces[face];
     const int x0 = std::max(firstScanlineFrom(left), 0);
     const int x1 = std::min(firstScanlineFrom(right), faces_.width());
@@ -175,18 +206,35 @@ class BandSweep {
       ++lineCost_[x];
       // The face's own affine depth, not one stepped along the span, so
       // that every algorithm compares the very same depths.
-      const float inverseDepth =
-          screenFace.inverseDepthAt(Vec2(static_cast<float>(x) + 0.5f, centreY));
-      if (inverseDepth <= lineInverseDepth_[x]) continue;
-      lineInverseDepth_[x] = inverseDepth;
-      lineFace_[x] = face;
-      ++counters_.pixelsWritten;
+      visit(x, screenFace.inverseDepthAt(Vec2(static_cast<float>(x) + 0.5f, centreY)));
     }
   }
 
+  void drawSpan(int y, int face, float left, float right) {
+    forEachCentre(y, face, left, right, [&](int x, float inverseDepth) {
+      if (inverseDepth <= lineInverseDepth_[x]) return;
+      lineInverseDepth_[x] = inverseDepth;
+      lineFace_[x] = face;
+      ++counters_.pixelsWritten;
+    });
+  }
+
+  // A transparent face joins the pixels' layers where it is in front of the
+  // opaque face so far.
+  void drawTransparentSpan(int y, int face, float left, float right) {
+    forEachCentre(y, face, left, right, [&](int x, float inverseDepth) {
+      if (inverseDepth > lineInverseDepth_[x]) lineLayers_.add(x, inverseDepth, face);
+    });
+  }
+
   void emitScanline(int y) {
+    counters_.layersMax = std::max<std::uint64_t>(counters_.layersMax, lineLayers_.held());
     for (int x = 0; x < faces_.width(); ++x) {
-      if (lineFace_[x] >= 0) faces_.setVisible(x, y, lineFace_[x]);
+      if (blending_ && lineLayers_.holdsAny(x)) {
+        counters_.blends += lineLayers_.show(*blending_, x, y, lineFace_[x], lineInverseDepth_[x]);
+      } else if (lineFace_[x] >= 0) {
+        faces_.setVisible(x, y, lineFace_[x]);
+      }
       if (lineCost_[x] > 0.0f) faces_.addCost(x, y, lineCost_[x]);
       lineInverseDepth_[x] = 0.0f;
       lineFace_[x] = -1;
@@ -227,6 +275,8 @@ class BandSweep {
     });
     step.tables.push_back(std::move(spans));
     step.tables.push_back(lineBuffers());
+    if (StepTable layers = lineLayers(); !layers.rows.empty())
+      step.tables.push_back(std::move(layers));
     step.settled.push_back({0, y, faces_.width(), y + 1});
     return step;
   }
@@ -245,6 +295,34 @@ class BandSweep {
     return runs;
   }
 
+  // The transparent faces kept at the scanline's pixels, as runs of pixels
+  // with the same: those in front of the opaque face, blended farthest first,
+  // and those it turned out to hide.
+  StepTable lineLayers() const {
+    StepTable runs{"transparent faces over the face buffer",
+                   {"from x", "to x", "blended, farthest first", "dropped, behind the face"},
+                   {}};
+    const auto layersAt = [&](int x) {
+      std::string blended, dropped;
+      lineLayers_.forEachLayer(x, lineInverseDepth_[x], [&](int face, bool inFront) {
+        std::string& list = inFront ? blended : dropped;
+        list += (list.empty() ? "" : " ") + std::to_string(sceneFaceOf(face));
+      });
+      return std::pair(blended, dropped);
+    };
+    if (!blending_) return runs;
+    for (int x = 0; x < faces_.width();) {
+      const auto layers = layersAt(x);
+      int end = x + 1;
+      while (end < faces_.width() && layersAt(end) == layers) ++end;
+      if (lineLayers_.holdsAny(x))
+        runs.rows.push_back(
+            {static_cast<double>(x), static_cast<double>(end - 1), layers.first, layers.second});
+      x = end;
+    }
+    return runs;
+  }
+
   // The number in the scene of screen face `face`, as the "face" buffer has it.
   int sceneFaceOf(int face) const { return screen_.faces[face].sceneFace; }
 
@@ -252,27 +330,24 @@ class BandSweep {
   const PixelRect& band_;
   std::span<const int> polygons_;
   VisibleFaces& faces_;
+  RasterFrame* blending_;
   ScanlineCounters& counters_;
   std::vector<std::vector<ActiveEdge>> edgeTable_;  // a bucket per scanline of the band
   std::vector<ActiveEdge> activeEdges_, merged_;
   std::vector<float> lineInverseDepth_;  // 0: infinitely far
   std::vector<int> lineFace_;            // -1: none
   std::vector<float> lineCost_;          // the depth tests made at each pixel
+  TransparentRow lineLayers_;            // empty unless blending
 };
 
-}  // namespace
-
-void ScanlineRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
-                                         RasterFrame& frame, Stats& stats) const {
-  sweepScanlines(screen, workers, frame, stats);
-}
-
-void sweepScanlines(const ScreenGeometry& screen, const Workers& workers, VisibleFaces& faces,
-                    Stats& stats) {
+// Sweeps the image, blending transparent faces on `blending` unless it is
+// nullptr.
+ScanlineCounters sweep(const ScreenGeometry& screen, const Workers& workers, VisibleFaces& faces,
+                       RasterFrame* blending, Stats& stats) {
   const ScanlineCounters counters = drawInBands<ScanlineCounters>(
       workers, screen, inMadeOrder(screen), faces.width(), faces.height(),
       [&](const PixelRect& band, std::span<const int> polygons, ScanlineCounters& bandCounters) {
-        BandSweep(screen, band, polygons, faces, bandCounters).run();
+        BandSweep(screen, band, polygons, faces, blending, bandCounters).run();
       });
   stats.add("depth_tests", static_cast<double>(counters.depthTests));
   stats.add("pixels_written", static_cast<double>(counters.pixelsWritten));
@@ -281,7 +356,22 @@ void sweepScanlines(const ScreenGeometry& screen, const Workers& workers, Visibl
             static_cast<double>(counters.activeEdgeVisits) / std::max(faces.height(), 1));
   stats.add("active_edges_max", static_cast<double>(counters.activeEdgesMax));
   stats.add("scanline_buffer_bytes",
-            static_cast<double>(faces.width()) * (sizeof(float) + sizeof(int)));
+            static_cast<double>(faces.width()) * (sizeof(float) + sizeof(int)) +
+                static_cast<double>(counters.layersMax) * TransparentRow::kBytesALayer);
+  return counters;
+}
+
+}  // namespace
+
+void ScanlineRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
+                                         RasterFrame& frame, Stats& stats) const {
+  const ScanlineCounters counters = sweep(screen, workers, frame, &frame, stats);
+  stats.add("transparent_blends", static_cast<double>(counters.blends));
+}
+
+void sweepScanlines(const ScreenGeometry& screen, const Workers& workers, VisibleFaces& faces,
+                    Stats& stats) {
+  sweep(screen, workers, faces, nullptr, stats);
 }
 
 }  // namespace rise

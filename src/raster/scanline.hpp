@@ -14,9 +14,9 @@ class ScanlineRenderer final : public VisibleSurfaceRenderer {
                          Stats& stats) const override;
 };
 
-// The sweep alone: tells `faces` the face seen at every pixel centre and the
-// depth tests made there, and adds the sweep's counters to `stats`. The
-// hybrid algorithm fills its item buffer with it.
+// The sweep alone: tells `faces` the nearest face at every pixel centre,
+// transparent or not, and the depth tests made there, and adds the sweep's
+// counters to `stats`. The hybrid algorithm fills its item buffer with it.
 void sweepScanlines(const ScreenGeometry& screen, const Workers& workers, VisibleFaces& faces,
                     Stats& stats);
 

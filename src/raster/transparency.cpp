@@ -53,11 +53,35 @@ std::uint64_t PaintedLayers::show(RasterFrame& frame) const {
   for (int y = band_.y0; y < band_.y1; ++y)
     for (int x = band_.x0; x < band_.x1; ++x) {
       const std::size_t pixel = index(x, y);
-      if (opaque_[pixel] >= 0) frame.setVisible(x, y, opaque_[pixel]);
-      for (int face : over_[pixel]) frame.blendVisible(x, y, face);
-      blends += over_[pixel].size();
+      blends += showLayers(frame, x, y, opaque_[pixel], over_[pixel]);
     }
   return blends;
+}
+
+std::uint64_t showLayers(RasterFrame& frame, int x, int y, int opaque, std::span<const int> over) {
+  if (opaque >= 0) frame.setVisible(x, y, opaque);
+  for (int face : over) frame.blendVisible(x, y, face);
+  return over.size();
+}
+
+void TransparentRow::add(int x, float inverseDepth, int face) {
+  std::vector<Layer>& layers = layers_[static_cast<std::size_t>(x)];
+  const auto place =
+      std::upper_bound(layers.begin(), layers.end(), inverseDepth,
+                       [](float w, const Layer& layer) { return w < layer.inverseDepth; });
+  layers.insert(place, {inverseDepth, face});
+  ++held_;
+}
+
+std::uint64_t TransparentRow::show(RasterFrame& frame, int x, int y, int opaque,
+                                   float opaqueDepth) {
+  std::vector<Layer>& layers = layers_[static_cast<std::size_t>(x)];
+  inFront_.clear();
+  for (const Layer& layer : layers)
+    if (layer.inverseDepth > opaqueDepth) inFront_.push_back(layer.face);
+  held_ -= layers.size();
+  layers.clear();
+  return showLayers(frame, x, y, opaque, inFront_);
 }
 
 }  // namespace rise

@@ -73,6 +73,15 @@ inline int pixelsSeeingOtherFaces(const RenderResult& a, const RenderResult& b) 
   return differing;
 }
 
+// The pixels at which two images differ by more than 0.02 in a channel.
+inline int pixelsDiffering(const Image& a, const Image& b) {
+  int differing = 0;
+  for (int y = 0; y < a.height(); ++y)
+    for (int x = 0; x < a.width(); ++x)
+      differing += glm::any(glm::greaterThan(glm::abs(a.at(x, y) - b.at(x, y)), Color(0.02f)));
+  return differing;
+}
+
 // What the ray tracer's primary ray through a pixel's centre meets first:
 // the shape's number (-1 for none) and how far away.
 struct PrimaryHit {
