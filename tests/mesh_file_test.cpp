@@ -284,11 +284,19 @@ TEST_F(MeshFiles, ATruncatedPlyModelIsRefused) {
             "aiMesh::mFaces[69302]::mIndices[0] is out of range)");
 }
 
-TEST_F(MeshFiles, APlyModelWhoseFacesHaveNoCornersIsRefused) {
-  // As a fuzzer made it: faces declared twice, the header's end misspelt and
-  // found later. Assimp reads faces of no corners, which its triangulation
-  // would stop the program on.
-  const std::string noCorners = R"(ply
+TEST_F(MeshFiles, APlyModelWithAFaceOfNoCornersIsRefused) {
+  // Assimp's triangulation would stop the program on an assertion.
+  EXPECT_EQ(reasonLoading(write("no-corners.ply",
+                                "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                "property float y\nproperty float z\nelement face 2\n"
+                                "property list uchar int vertex_indices\nend_header\n"
+                                "0 0 0\n1 0 0\n0 1 0\n0\n3 0 1 2\n")),
+            "face 0 has no corners, as in a corrupt file");
+}
+
+TEST_F(MeshFiles, APlyHeaderWithWordsPlyDoesNotHaveIsRefused) {
+  // As a fuzzer made it: Assimp stopped RISE on an assertion reading it.
+  const std::string misspeltKeyword = R"(ply
 format ascii 1.0
 element vertex 4
 property float x
@@ -313,8 +321,16 @@ end_header
 3 0 1 2
 3 0 2 3
 )";
-  EXPECT_EQ(reasonLoading(write("no-corners.ply", noCorners)),
-            "face 0 has no corners, as in a corrupt file");
+  EXPECT_EQ(reasonLoading(write("misspelt.ply", misspeltKeyword)),
+            "the PLY header is corrupt: line 5: 'prpoerty' is not a PLY keyword (format, element, "
+            "property, comment, end_header)");
+  // An unknown type, and an end glued to what follows, made Assimp read for ever.
+  const std::string start = "ply\nformat ascii 1.0\nelement vertex 1\n";
+  EXPECT_EQ(reasonLoading(write("unknown-type.ply", start + "property flaot x\nend_header\n0\n")),
+            "the PLY header is corrupt: line 4: 'flaot' is not a PLY type (char, uchar, short, "
+            "ushort, int, uint, float, double)");
+  EXPECT_EQ(reasonLoading(write("glued-end.ply", start + "property float x\nend_header3 0 1\n")),
+            "the PLY header is corrupt: 'end_header' is not a line of its own");
 }
 
 TEST_F(MeshFiles, TruncatedModelsAreRefusedAtEveryLength) {

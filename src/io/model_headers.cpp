@@ -198,6 +198,30 @@ std::uint64_t leastPropertySize(const std::vector<std::string_view>& words, bool
   return plyTypeSize(words.size() >= 2 ? words[list ? 2 : 1] : "");
 }
 
+// Refuses a header line that Assimp's PLY reader could loop on instead of
+// reporting: a keyword PLY does not have, or a property of a type it does
+// not have.
+void checkPlyHeaderLine(const std::vector<std::string_view>& words, int line) {
+  const auto corrupt = [&](const std::string& what) {
+    return MeshFileError("the PLY header is corrupt: line " + std::to_string(line) + ": " + what);
+  };
+  const std::string keyword = lowercase(words[0]);
+  if (keyword != "ply" && keyword != "format" && keyword != "comment" && keyword != "obj_info" &&
+      keyword != "element" && keyword != "property")
+    throw corrupt("'" + std::string(words[0]) +
+                  "' is not a PLY keyword (format, element, property, comment, end_header)");
+  if (keyword != "property") return;
+  const bool list = words.size() >= 2 && lowercase(words[1]) == "list";
+  const std::size_t typesEnd = list ? 4 : 2;
+  if (words.size() < typesEnd + 1)
+    throw corrupt("a property needs a type and a name" +
+                  std::string(list ? " (a list: two types and a name)" : ""));
+  for (std::size_t type = list ? 2 : 1; type < typesEnd; ++type)
+    if (plyTypeSize(words[type]) == 0)
+      throw corrupt("'" + std::string(words[type]) +
+                    "' is not a PLY type (char, uchar, short, ushort, int, uint, float, double)");
+}
+
 }  // namespace
 
 void checkPlyHeader(std::string_view start, std::uintmax_t fileSize) {
@@ -207,14 +231,21 @@ void checkPlyHeader(std::string_view start, std::uintmax_t fileSize) {
   if (endLine == std::string_view::npos)
     throw MeshFileError("the PLY header is cut short: it has no 'end_header' line");
   const std::size_t bodyStart = start.find('\n', endLine);
+  const std::vector<std::string_view> endWords =
+      wordsOf(start.substr(endLine, bodyStart - endLine));
+  if (start[endLine - 1] != '\n' || endWords.size() != 1 || endWords.front() != "end_header")
+    throw MeshFileError("the PLY header is corrupt: 'end_header' is not a line of its own");
   bool text = false;
   std::vector<PlyElement> elements;
   std::size_t at = 0;
+  int line = 0;
   while (at < endLine) {
     const std::size_t lineEnd = std::min(start.find('\n', at), endLine);
     const std::vector<std::string_view> words = wordsOf(start.substr(at, lineEnd - at));
     at = lineEnd + 1;
+    ++line;
     if (words.empty()) continue;
+    checkPlyHeaderLine(words, line);
     const std::string keyword = lowercase(words[0]);
     if (keyword == "format" && words.size() >= 2) text = lowercase(words[1]) == "ascii";
     if (keyword == "element") {
