@@ -63,6 +63,39 @@ TEST_F(ImageLimits, AnImageOfMorePixelsThanRiseReadsIsRefusedBeforeItIsDecoded) 
                 "RISE reads");
 }
 
+TEST_F(ImageLimits, AnUncompressedTgaCutShortIsRefusedBeforeItIsDecoded) {
+  // The header of a grey image of 3000 x 2000 one-byte pixels, then 10 of them.
+  const auto tga = [&](int width, int height, int pixels) {
+    const std::string header{0,
+                             0,
+                             3,
+                             0,
+                             0,
+                             0,
+                             0,
+                             0,
+                             0,
+                             0,
+                             0,
+                             0,
+                             static_cast<char>(width & 0xff),
+                             static_cast<char>(width >> 8),
+                             static_cast<char>(height & 0xff),
+                             static_cast<char>(height >> 8),
+                             8,
+                             0};
+    return header + std::string(static_cast<std::size_t>(pixels), '\x80');
+  };
+  const fs::path cut = write("cut.tga", tga(3000, 2000, 10));
+  EXPECT_EQ(errorOf<ImageFileError>([&] { readImage(cut); }),
+            cut.string() +
+                ": the file is cut short: its TGA header promises 3000 x 2000 pixels, "
+                "6000018 bytes, but it has 28");
+  const Image whole = readImage(write("whole.tga", tga(30, 20, 600)));
+  EXPECT_EQ(whole.width(), 30);
+  EXPECT_EQ(whole.height(), 20);
+}
+
 TEST_F(ImageLimits, ADecoderFailureIsSaidInTheUsersWords) {
   const fs::path cut = write("cut.png", pngHeader(4, 4));
   EXPECT_EQ(

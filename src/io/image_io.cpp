@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -65,9 +66,16 @@ ImageFormat formatOf(const std::filesystem::path& path) {
   throw fileError(path, "unsupported image format '" + extension + "' (use .png, .ppm or .exr)");
 }
 
+// Each 8-bit level's linear value is worked out once: an 8K texture would
+// otherwise cost a power for each channel of its 33 million pixels.
 float linearFromByte(std::uint8_t byte, Encoding encoding) {
-  const float value = static_cast<float>(byte) / 255.0f;
-  return encoding == Encoding::Srgb ? linearFromSrgb(value) : value;
+  static const std::array<float, 256> srgbLevels = [] {
+    std::array<float, 256> levels{};
+    for (std::size_t level = 0; level < levels.size(); ++level)
+      levels[level] = linearFromSrgb(static_cast<float>(level) / 255.0f);
+    return levels;
+  }();
+  return encoding == Encoding::Srgb ? srgbLevels[byte] : static_cast<float>(byte) / 255.0f;
 }
 
 // Interleaved 8-bit RGB, top row first: the layout of both PNG and PPM.
@@ -201,6 +209,35 @@ std::string explainedStbFailure() {
   return meaning + " (stb_image: " + reason + ")";
 }
 
+bool hasExtension(const std::filesystem::path& path, std::string_view wanted) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == wanted;
+}
+
+// An uncompressed TGA file (image types 2 and 3: true colour and grey) holds
+// every pixel after its 18-byte header and its identification field.
+// stb_image reads past the end of a short one as if the pixels were there,
+// so that a file of a few bytes could make an image of millions of pixels.
+void checkUncompressedTgaIsWhole(std::FILE* file, const std::filesystem::path& path, int width,
+                                 int height) {
+  if (!hasExtension(path, ".tga")) return;
+  std::uint8_t header[18];
+  const long start = std::ftell(file);
+  const bool read = std::fread(header, 1, sizeof header, file) == sizeof header;
+  std::fseek(file, start, SEEK_SET);
+  if (!read || (header[2] != 2 && header[2] != 3)) return;
+  const std::uintmax_t pixelBytes = (header[16] + 7u) / 8u;
+  const std::uintmax_t needed =
+      sizeof header + header[0] + static_cast<std::uintmax_t>(width) * height * pixelBytes;
+  const std::uintmax_t size = std::filesystem::file_size(path);
+  if (size < needed)
+    throw fileError(path, "the file is cut short: its TGA header promises " +
+                              std::to_string(width) + " x " + std::to_string(height) + " pixels, " +
+                              std::to_string(needed) + " bytes, but it has " +
+                              std::to_string(size));
+}
+
 // The size stb_image finds in the header, checked before it decodes.
 void checkImageSize(std::FILE* file, const std::filesystem::path& path) {
   int width = 0, height = 0, channels = 0;
@@ -209,6 +246,7 @@ void checkImageSize(std::FILE* file, const std::filesystem::path& path) {
     throw fileError(path, "the image is " + std::to_string(width) + " x " + std::to_string(height) +
                               " pixels, more than the " + std::to_string(kMostImagePixels) +
                               " (8192 x 4096) that RISE reads");
+  checkUncompressedTgaIsWhole(file, path, width, height);
 }
 
 // PNG, JPEG, TGA, BMP and the other 8-bit formats stb_image reads.
@@ -241,12 +279,6 @@ Image readHdrImage(std::FILE* file, const std::filesystem::path& path) {
     for (int x = 0; x < width; ++x, value += 3)
       image.at(x, y) = Color(value[0], value[1], value[2]);
   return image;
-}
-
-bool hasExtension(const std::filesystem::path& path, std::string_view wanted) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == wanted;
 }
 
 // OpenEXR's red, green and blue, as RISE writes them, read back as floats.
