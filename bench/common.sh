@@ -40,11 +40,11 @@ require_count() {
   fi
 }
 
-# Makes the caller's BUILD_DIR and output folder absolute (they are relative
+# Makes the caller's BUILD_DIR (when it has one) and output folder absolute (they are relative
 # to where the caller stands), then moves to the repository root, where the
 # example scenes are.
 enter_repository() {
-  build="$(realpath -m "$build")"
+  [[ -z "$build" ]] || build="$(realpath -m "$build")"
   out="$(realpath -m "$out")"
   cd "$(dirname "${BASH_SOURCE[0]}")/.." || die "cannot enter the repository"
 }
@@ -71,4 +71,56 @@ smallest() { sort -g | head -n 1; }
 # a / b to two decimals, or "-" when b is not a positive number.
 ratio() {
   awk -v a="$1" -v b="$2" 'BEGIN { if (b != "-" && b > 0) printf "%.2f", a / b; else print "-" }'
+}
+
+# Runs the command, its output to the log $1; prints its wall-clock seconds.
+wall_seconds() {
+  local log="$1" start end
+  shift
+  start="$(date +%s%N)"
+  "$@" >"$log" 2>&1 || die "$1 failed; see $log"
+  end="$(date +%s%N)"
+  awk -v ns="$((end - start))" 'BEGIN { printf "%.3f\n", ns / 1e9 }'
+}
+
+# Renders with the rise executable $1 into $out/$2.png on $threads threads,
+# the rest being rise's arguments; prints "wall render_seconds".
+# shellcheck disable=SC2154 # threads is the caller's, as out is.
+timed_render() {
+  local rise="$1" name="$2" wall
+  shift 2
+  wall="$(wall_seconds "$out/$name.log" "$rise" render -o "$out/$name.png" --threads "$threads" \
+    --stats "$out/$name.json" "$@")"
+  echo "$wall $(json_seconds "$out/$name.json" render_seconds)"
+}
+
+# Makes the mesh of bench/raster/make_mesh.py (its options after the file)
+# unless the file is there.
+make_mesh_once() {
+  [[ -f "$1" ]] || python3 bench/raster/make_mesh.py "$@" >&2
+}
+
+# A 1920x1080 scene of the mesh $out/$1.ply, from the camera, and with the
+# material, of the Embree and OSMesa programs, under the lights $2 (a YAML list).
+mesh_scene() {
+  local name="$1" lights="$2"
+  cat <<YAML
+image: {width: 1920, height: 1080, background: [0.05, 0.05, 0.1]}
+camera: {position: [0.6, 0.9, -2.6], look_at: [0, 0, 0], up: [0, 1, 0], fov: 45}
+ambient: [0.1, 0.1, 0.1]
+lights: $lights
+materials:
+  clay: {color: [0.8, 0.55, 0.35], ka: 1.0, kd: 0.8, ks: 0.3, n: 20}
+objects:
+  - mesh: {file: $name.ply, material: clay}
+YAML
+}
+
+# The raster benchmark's million triangles under one point light, as
+# raster/osmesa_gouraud.cpp sees them: makes $out/bumpy-sphere.ply once and
+# writes $out/million.yaml.
+million_triangle_scene() {
+  make_mesh_once "$out/bumpy-sphere.ply"
+  local light="{point: {position: [-3, 4, -4], color: [1, 1, 1]}}"
+  mesh_scene bumpy-sphere "[$light]" >"$out/million.yaml"
 }

@@ -57,25 +57,6 @@ grep -q '^CMAKE_INTERPROCEDURAL_OPTIMIZATION:.*=OFF' "$build/CMakeCache.txt" 2>/
   echo "warning: $build is built without link-time optimisation" >&2
 mkdir -p "$out"
 
-# Runs the command, its output to the log $1; prints its wall-clock seconds.
-wall_seconds() {
-  local log="$1" start end
-  shift
-  start="$(date +%s%N)"
-  "$@" >"$log" 2>&1 || die "$1 failed; see $log"
-  end="$(date +%s%N)"
-  awk -v ns="$((end - start))" 'BEGIN { printf "%.3f\n", ns / 1e9 }'
-}
-
-# Renders with RISE into $out/$1.png; prints "wall render_seconds".
-rise_run() {
-  local name="$1" wall
-  shift
-  wall="$(wall_seconds "$out/$name.log" "$rise" render -o "$out/$name.png" --threads "$threads" \
-    --stats "$out/$name.json" "$@")"
-  echo "$wall $(json_seconds "$out/$name.json" render_seconds)"
-}
-
 # POV-Ray's whole process on the spheres at 800x600 less its start-up; $1
 # names the run, the rest are its anti-aliasing options.
 povray_run() {
@@ -89,28 +70,11 @@ povray_run() {
   awk -v whole="$whole" -v start_up="$start_up" 'BEGIN { printf "%.3f\n", whole - start_up }'
 }
 
-# The 100,000-triangle mesh without normals and the million-triangle one with
-# them (made once), and the scenes that frame them from the camera of the
-# Embree and OSMesa programs.
-mesh_scene() {
-  local name="$1" lights="$2"
-  cat <<YAML
-image: {width: 1920, height: 1080, background: [0.05, 0.05, 0.1]}
-camera: {position: [0.6, 0.9, -2.6], look_at: [0, 0, 0], up: [0, 1, 0], fov: 45}
-ambient: [0.1, 0.1, 0.1]
-lights: $lights
-materials:
-  clay: {color: [0.8, 0.55, 0.35], ka: 1.0, kd: 0.8, ks: 0.3, n: 20}
-objects:
-  - mesh: {file: $name.ply, material: clay}
-YAML
-}
-[[ -f "$out/sphere-100k.ply" ]] ||
-  python3 bench/raster/make_mesh.py "$out/sphere-100k.ply" --segments 250 --rings 201 \
-    --no-normals >&2
-[[ -f "$out/sphere-1m.ply" ]] || python3 bench/raster/make_mesh.py "$out/sphere-1m.ply" >&2
+# The 100,000-triangle mesh without normals (made once) in a scene without
+# lights, and the million-triangle one of the raster benchmark.
+make_mesh_once "$out/sphere-100k.ply" --segments 250 --rings 201 --no-normals
 mesh_scene sphere-100k "[]" >"$out/primary.yaml"
-mesh_scene sphere-1m "[{point: {position: [-3, 4, -4], color: [1, 1, 1]}}]" >"$out/million.yaml"
+million_triangle_scene
 
 rows=(spheres spheres-aa primary z-buffer scanline)
 declare -A rise_times peer_times
@@ -127,21 +91,21 @@ record() {
 # inside $(...) given as an argument would go unnoticed.
 run_rows() {
   local rise_time peer_time llvmpipe algorithm
-  rise_time="$(rise_run spheres examples/spheres.yaml --width 800 --height 600)"
+  rise_time="$(timed_render "$rise" spheres examples/spheres.yaml --width 800 --height 600)"
   peer_time="$(povray_run povray-spheres -A)"
   record spheres "$rise_time" "$peer_time"
-  rise_time="$(rise_run spheres-aa examples/spheres.yaml --width 800 --height 600 \
+  rise_time="$(timed_render "$rise" spheres-aa examples/spheres.yaml --width 800 --height 600 \
     --samples 16 --pattern jittered)"
   peer_time="$(povray_run povray-spheres-aa +A0.0 +AM1 +R4 +J)"
   record spheres-aa "$rise_time" "$peer_time"
-  rise_time="$(rise_run primary "$out/primary.yaml")"
+  rise_time="$(timed_render "$rise" primary "$out/primary.yaml")"
   peer_time="$("$embree" "$out/sphere-100k.ply" 1920 1080 "$threads" 1 \
     "$out/embree-primary.ppm" | sed -n 's/^best_seconds //p')"
   record primary "$rise_time" "$peer_time"
-  llvmpipe="$(LP_NUM_THREADS="$threads" "$osmesa" "$out/sphere-1m.ply" 1920 1080 1 \
+  llvmpipe="$(LP_NUM_THREADS="$threads" "$osmesa" "$out/bumpy-sphere.ply" 1920 1080 1 \
     "$out/million-llvmpipe.ppm" | sed -n 's/^best_seconds //p')"
   for algorithm in z-buffer scanline; do
-    rise_time="$(rise_run "million-$algorithm" "$out/million.yaml" -a "$algorithm" \
+    rise_time="$(timed_render "$rise" "million-$algorithm" "$out/million.yaml" -a "$algorithm" \
       --shading gouraud --encoding linear)"
     record "$algorithm" "$rise_time" "$llvmpipe"
   done

@@ -29,8 +29,7 @@ start_benchmark "$@"
 require_count --runs "$runs" 1
 require_count --threads "$threads" 1
 
-mesh="$out/bumpy-sphere.ply"
-[[ -f "$mesh" ]] || python3 bench/raster/make_mesh.py "$mesh" >&2
+make_mesh_once "$out/bumpy-sphere.ply"
 cp bench/hybrid/million-mirror.yaml "$out/"
 
 # One value of a render's statistics JSON, with `decimals` places.

@@ -72,20 +72,8 @@ for algorithm in depth-sort area-subdivision z-buffer scanline; do
 done
 echo
 
+million_triangle_scene
 mesh="$out/bumpy-sphere.ply"
-[[ -f "$mesh" ]] || python3 bench/raster/make_mesh.py "$mesh" >&2
-# The camera, light and material that osmesa_gouraud.cpp sets up too.
-cat >"$out/million.yaml" <<YAML
-image: {width: $WIDTH, height: $HEIGHT, background: [0.05, 0.05, 0.1]}
-camera: {position: [0.6, 0.9, -2.6], look_at: [0, 0, 0], up: [0, 1, 0], fov: 45}
-ambient: [0.1, 0.1, 0.1]
-lights:
-  - point: {position: [-3, 4, -4], color: [1, 1, 1]}
-materials:
-  clay: {color: [0.8, 0.55, 0.35], ka: 1.0, kd: 0.8, ks: 0.3, n: 20}
-objects:
-  - mesh: {file: bumpy-sphere.ply, material: clay}
-YAML
 
 echo "1,000,000 triangles, ${WIDTH}x${HEIGHT}, Gouraud, $threads threads, best of $frames:"
 declare -A frame render
