@@ -32,6 +32,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -332,20 +333,20 @@ void paintBand(const ScreenGeometry& pieces, const PixelRect& band, std::span<co
   PolygonCoverage coverage;
   for (int piece : order) {
     const ScreenPolygon& polygon = pieces.polygons[piece];
-    Step step;
+    std::optional<Step> step;
     if (steps) step = paintStep(pieces, piece, frame);
     coverage.reset(pieces.cornersOf(polygon));
     const bool transparent = frame.isTransparent(polygon.face);
     coverage.forEachPixel(band, [&](int x, int y) {
       painted.paint(x, y, polygon.face, transparent);
       frame.addCost(x, y, 1.0f);
-      if (steps) {
-        step.writes.push_back(frame.writeOf(x, y, polygon.face, 0.0f));
-        if (transparent) step.writes.back().color = painted.shownAt(frame, x, y);
+      if (step) {
+        step->writes.push_back(frame.writeOf(x, y, polygon.face, 0.0f));
+        if (transparent) step->writes.back().color = painted.shownAt(frame, x, y);
       }
       ++pixelsWritten;
     });
-    if (steps) steps->record(std::move(step), stepOf[piece], band.y0);
+    if (step) steps->record(std::move(*step), stepOf[piece], band.y0);
   }
   painted.show(frame);
 }

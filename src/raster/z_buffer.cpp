@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -105,10 +106,10 @@ void blendTransparent(const ScreenGeometry& screen, const PixelRect& band,
   for (int index : transparentBackToFront(screen, frame, polygons)) {
     const ScreenPolygon& polygon = screen.polygons[index];
     const ScreenFace& face = screen.faces[polygon.face];
-    Step step;
+    std::optional<Step> step;
     if (steps) {
       step = polygonDrawn(screen, index, frame);
-      step.text +=
+      step->text +=
           "; transparent, it is blended over what is behind it, back to front after the "
           "opaque polygons, and leaves the depth buffer as it is";
     }
@@ -123,12 +124,12 @@ void blendTransparent(const ScreenGeometry& screen, const PixelRect& band,
         frame.blendVisible(x, y, polygon.face);
         ++counters.blends;
       }
-      if (!steps) return;
+      if (!step) return;
       // What the pixel shows is the blend.
-      step.writes.push_back(frame.writeOf(x, y, polygon.face, inverseDepth, inFront));
-      if (inFront) step.writes.back().color = frame.image().at(x, y);
+      step->writes.push_back(frame.writeOf(x, y, polygon.face, inverseDepth, inFront));
+      if (inFront) step->writes.back().color = frame.image().at(x, y);
     });
-    if (steps) steps->record(std::move(step), stepOf[index], band.y0);
+    if (step) steps->record(std::move(*step), stepOf[index], band.y0);
   }
 }
 
@@ -142,7 +143,7 @@ void drawBand(const ScreenGeometry& screen, const PixelRect& band, std::span<con
     const ScreenPolygon& polygon = screen.polygons[index];
     const ScreenFace& face = screen.faces[polygon.face];
     if (frame.isTransparent(polygon.face)) continue;
-    Step step;
+    std::optional<Step> step;
     if (steps) step = polygonDrawn(screen, index, frame);
     coverage.reset(screen.cornersOf(polygon));
     coverage.forEachPixel(band, [&](int x, int y) {
@@ -152,13 +153,13 @@ void drawBand(const ScreenGeometry& screen, const PixelRect& band, std::span<con
       const float inverseDepth =
           face.inverseDepthAt(Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
       const bool nearer = inverseDepth > buffer.inverseDepth[pixel];
-      if (steps) step.writes.push_back(frame.writeOf(x, y, polygon.face, inverseDepth, nearer));
+      if (step) step->writes.push_back(frame.writeOf(x, y, polygon.face, inverseDepth, nearer));
       if (!nearer) return;
       buffer.inverseDepth[pixel] = inverseDepth;
       buffer.face[pixel] = polygon.face;
       ++counters.pixelsWritten;
     });
-    if (steps) steps->record(std::move(step), index, band.y0);
+    if (step) steps->record(std::move(*step), index, band.y0);
   }
   for (int y = band.y0; y < band.y1; ++y)
     for (int x = band.x0; x < band.x1; ++x)

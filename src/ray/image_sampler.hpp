@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "core/random.hpp"
@@ -72,15 +73,27 @@ class TileTrace {
 RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer,
                         const std::function<void(TileTrace&)>& traceTile);
 
+// Traces sample i of the pixel, at `offset` in it, recording its rays as a
+// ray tree of the tile's recorder.
+template <typename Trace>
+SampleResult traceRecorded(TileTrace& tile, const glm::ivec2& pixel, int i, const Vec2& offset,
+                           Rng& rng, const Trace& trace) {
+  RayTree tree{pixel, i, Vec2(pixel) + offset};
+  const SampleResult sample = trace(pixel, i, rng, tile.counters, &tree);
+  tile.steps()->recordTree(std::move(tree));
+  return sample;
+}
+
 // The common pixel loop: for each pixel of the tile, a generator seeded by
 // the pixel alone (so that the image does not depend on which thread traced
 // it); place(pixel, rng) puts the pixel's samples and returns their offsets
 // in it; trace(pixel, i, rng, counters, tree) traces sample i, recording its
-// rays in `tree` unless that is null. Every sample goes to the film, the
-// first to the buffers.
+// rays in `tree` unless that is null (a tree is made only for the pixel
+// recorded). Every sample goes to the film, the first to the buffers.
 template <typename Place, typename Trace>
 void tracePixels(TileTrace& tile, std::uint64_t seed, const Place& place, const Trace& trace) {
   const PixelRect& area = tile.area();
+  StepRecorder* const steps = tile.steps();
   for (int y = area.y0; y < area.y1 && !tile.cancelled(); ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
       const glm::ivec2 pixel(x, y);
@@ -88,13 +101,12 @@ void tracePixels(TileTrace& tile, std::uint64_t seed, const Place& place, const 
       const std::vector<Vec2>& offsets = place(pixel, rng);
       const std::uint64_t testsBefore = tile.counters.intersections.tests;
       SampleResult first;
-      const bool recording = tile.steps() && tile.steps()->wantsTreeOf(pixel);
+      const bool recording = steps && steps->wantsTreeOf(pixel);
       for (int i = 0; i < static_cast<int>(offsets.size()); ++i) {
-        RayTree tree{pixel, i, Vec2(pixel) + offsets[static_cast<std::size_t>(i)]};
-        const SampleResult sample =
-            trace(pixel, i, rng, tile.counters, recording ? &tree : nullptr);
-        if (recording) tile.steps()->recordTree(std::move(tree));
-        tile.addSample(pixel, offsets[static_cast<std::size_t>(i)], sample.color);
+        const Vec2& offset = offsets[static_cast<std::size_t>(i)];
+        const SampleResult sample = recording ? traceRecorded(tile, pixel, i, offset, rng, trace)
+                                              : trace(pixel, i, rng, tile.counters, nullptr);
+        tile.addSample(pixel, offset, sample.color);
         if (i == 0) first = sample;
       }
       tile.recordBuffers(pixel, first, tile.counters.intersections.tests - testsBefore);

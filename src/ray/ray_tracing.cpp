@@ -78,7 +78,9 @@ Ray spawnRay(const ShadingFrame& frame, const Vec3& direction) {
 }
 
 // One ray's journey and the rays it gives rise to. When a tree is being
-// recorded for a student, every ray is told to it as it is traced.
+// recorded for a student, every ray is told to it as it is traced; the
+// telling stays out of the way of a render nobody watches (an unlikely
+// branch, the Phong terms it wants worked out in a function of its own).
 class Recursion {
  public:
   Recursion(const TracingContext& context, PathChoices& choices, TraceCounters& counters,
@@ -96,17 +98,20 @@ class Recursion {
   // The ray once its nearest hit is known (nullptr: none): Shade there, or
   // the background.
   Color follow(const Ray& ray, const Hit* hit, int depth, RayKind kind, const Color& weight) {
-    if (tree_) tree_->begin(kind, ray, depth, weight);
+    if (tree_) [[unlikely]]
+      tree_->begin(kind, ray, depth, weight);
     Color color = context_.scene.image.background;
     if (hit) {
       const Material& material = context_.scene.materialOf(*hit->shape);
       const ShadingFrame frame = shadingFrame(ray, *hit, material);
       if (depth == 1)
         seen_ = {Color(0.0f), hit->t * glm::length(ray.direction), frame.surface.normal};
-      if (tree_) tree_->hit(*hit, frame.surface);
+      if (tree_) [[unlikely]]
+        tree_->hit(*hit, frame.surface);
       color = shade(frame, material, depth);
     }
-    if (tree_) tree_->end(color);
+    if (tree_) [[unlikely]]
+      tree_->end(color);
     return color;
   }
 
@@ -118,7 +123,8 @@ class Recursion {
   Color shade(const ShadingFrame& frame, const Material& material, int depth) {
     const SurfaceColors colors = surfaceColors(material, frame.surface);
     const Color ambient = phongAmbient(material, colors, context_.scene.ambient);
-    if (tree_) tree_->ambient(ambient);
+    if (tree_) [[unlikely]]
+      tree_->ambient(ambient);
     Color color = ambient + directLight(frame, material, colors, depth);
     if (depth >= context_.maxDepth) return color;
     if (material.reflection > 0.0f)
@@ -147,16 +153,25 @@ class Recursion {
       ++counters_.shadowRays;
       const Color visible = context_.intersector.transmittance(*shadow, 0.0f, sample.distance,
                                                                counters_.intersections);
-      if (tree_)
-        tree_->shadow(*shadow, *light, sample.distance, visible,
-                      phongDirect(material, {colors.color, Color(0.0f)}, frame.shadingNormal,
-                                  frame.toViewer, sample),
-                      phongDirect(material, {Color(0.0f), colors.ks}, frame.shadingNormal,
-                                  frame.toViewer, sample));
+      if (tree_) [[unlikely]]
+        tellShadow(*shadow, *light, sample, visible, frame, material, colors);
       if (visible == Color(0.0f)) continue;
       color += visible * phongDirect(material, colors, frame.shadingNormal, frame.toViewer, sample);
     }
     return color;
+  }
+
+  // A shadow ray told to the tree, with the diffuse and specular terms of
+  // its light.
+  [[gnu::noinline]] void tellShadow(const Ray& shadow, const Light& light,
+                                    const LightSample& sample, const Color& visible,
+                                    const ShadingFrame& frame, const Material& material,
+                                    const SurfaceColors& colors) {
+    tree_->shadow(shadow, light, sample.distance, visible,
+                  phongDirect(material, {colors.color, Color(0.0f)}, frame.shadingNormal,
+                              frame.toViewer, sample),
+                  phongDirect(material, {Color(0.0f), colors.ks}, frame.shadingNormal,
+                              frame.toViewer, sample));
   }
 
   Ray reflectedRay(const ShadingFrame& frame, const Material& material, int depth) {

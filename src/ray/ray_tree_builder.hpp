@@ -10,24 +10,27 @@
 
 namespace rise {
 
+// Its calls are kept out of line (gnu::noinline): inlined, even where they
+// are not taken, they would swell the recursion of a render nobody watches
+// and crowd out what it inlines for speed.
 class RayTreeBuilder {
  public:
   RayTreeBuilder(const Scene& scene, RayTree& tree) : scene_(scene), tree_(tree) {}
 
   // A ray begins, from the ray being traced now; `weight` is what the colour
   // it brings back is multiplied by at its parent's surface.
-  void begin(RayKind kind, const Ray& ray, int depth, const Color& weight);
+  [[gnu::noinline]] void begin(RayKind kind, const Ray& ray, int depth, const Color& weight);
   // The current ray met a surface.
-  void hit(const Hit& hit, const SurfacePoint& surface);
+  [[gnu::noinline]] void hit(const Hit& hit, const SurfacePoint& surface);
   // The ambient term at the current ray's surface.
-  void ambient(const Color& term);
+  [[gnu::noinline]] void ambient(const Color& term);
   // A shadow ray from the current ray's surface towards `light`, `distance`
   // away: the fraction of the light that got through, and the Phong model's
   // diffuse and specular terms there.
-  void shadow(const Ray& ray, const Light& light, float distance, const Color& visible,
-              const Color& diffuse, const Color& specular);
+  [[gnu::noinline]] void shadow(const Ray& ray, const Light& light, float distance,
+                                const Color& visible, const Color& diffuse, const Color& specular);
   // The current ray ends, bringing back `color`.
-  void end(const Color& color);
+  [[gnu::noinline]] void end(const Color& color);
 
  private:
   RayNode& current() { return tree_.rays[static_cast<std::size_t>(current_)]; }
