@@ -219,14 +219,18 @@ bool hasExtension(const std::filesystem::path& path, std::string_view wanted) {
 // every pixel after its 18-byte header and its identification field.
 // stb_image reads past the end of a short one as if the pixels were there,
 // so that a file of a few bytes could make an image of millions of pixels.
-void checkUncompressedTgaIsWhole(std::FILE* file, const std::filesystem::path& path, int width,
-                                 int height) {
-  if (!hasExtension(path, ".tga")) return;
+// TGA has no signature: stb_image takes for one, whatever its name, a file
+// that no other format claims (BMP is the only one whose third byte can be
+// 2 or 3) with such a header.
+void checkUncompressedTgaIsWhole(std::FILE* file, const std::filesystem::path& path) {
   std::uint8_t header[18];
   const long start = std::ftell(file);
   const bool read = std::fread(header, 1, sizeof header, file) == sizeof header;
   std::fseek(file, start, SEEK_SET);
-  if (!read || (header[2] != 2 && header[2] != 3)) return;
+  const bool bmp = header[0] == 'B' && header[1] == 'M';
+  if (!read || bmp || header[1] > 1 || (header[2] != 2 && header[2] != 3)) return;
+  const int width = header[12] | header[13] << 8;
+  const int height = header[14] | header[15] << 8;
   const std::uintmax_t pixelBytes = (header[16] + 7u) / 8u;
   const std::uintmax_t needed =
       sizeof header + header[0] + static_cast<std::uintmax_t>(width) * height * pixelBytes;
@@ -246,7 +250,6 @@ void checkImageSize(std::FILE* file, const std::filesystem::path& path) {
     throw fileError(path, "the image is " + std::to_string(width) + " x " + std::to_string(height) +
                               " pixels, more than the " + std::to_string(kMostImagePixels) +
                               " (8192 x 4096) that RISE reads");
-  checkUncompressedTgaIsWhole(file, path, width, height);
 }
 
 // PNG, JPEG, TGA, BMP and the other 8-bit formats stb_image reads.
@@ -318,6 +321,7 @@ Image readImage(const std::filesystem::path& path, Encoding encoding,
   if (!file) throw fileError(path, because("cannot read", std::strerror(errno)));
   // stb_image reads the signature and the header and puts the file back where it was.
   checkImageSize(file.get(), path);
+  checkUncompressedTgaIsWhole(file.get(), path);
   if (stbi_is_hdr_from_file(file.get())) return readHdrImage(file.get(), path);
   return readEightBitImage(file.get(), path, encoding);
 }
