@@ -1,11 +1,12 @@
 #include "animation.hpp"
 
-#include <cstdio>
 #include <cctype>
+#include <cstdio>
 #include <cstdlib>
 #include <iostream>
 #include <regex>
 
+#include "core/text.hpp"
 #include "io/animated_png.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
@@ -33,12 +34,6 @@ std::string parseRange(const std::string& text, std::vector<int>& range) {
 
 // A film's frames a second.
 constexpr int kFramesPerSecond = 24;
-
-std::string lowercaseExtension(const fs::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension;
-}
 
 bool isAnimatedPng(const fs::path& video) {
   const std::string extension = lowercaseExtension(video);

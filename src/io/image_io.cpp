@@ -26,6 +26,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/text.hpp"
 #include "io/atomic_file.hpp"
 #include "io/byte_encoding.hpp"
 #include "io/file_limits.hpp"
@@ -56,14 +57,12 @@ std::string because(std::string_view problem, std::string_view reason) {
 enum class ImageFormat { Png, Ppm, Exr };
 
 ImageFormat formatOf(const std::filesystem::path& path) {
-  const std::string extension = path.extension().string();
-  std::string lowered = extension;
-  std::transform(lowered.begin(), lowered.end(), lowered.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string lowered = lowercaseExtension(path);
   if (lowered == ".png") return ImageFormat::Png;
   if (lowered == ".ppm") return ImageFormat::Ppm;
   if (lowered == ".exr") return ImageFormat::Exr;
-  throw fileError(path, "unsupported image format '" + extension + "' (use .png, .ppm or .exr)");
+  throw fileError(path, "unsupported image format '" + path.extension().string() +
+                            "' (use .png, .ppm or .exr)");
 }
 
 // Each 8-bit level's linear value is worked out once: an 8K texture would
@@ -209,12 +208,6 @@ std::string explainedStbFailure() {
   return meaning + " (stb_image: " + reason + ")";
 }
 
-bool hasExtension(const std::filesystem::path& path, std::string_view wanted) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == wanted;
-}
-
 // An uncompressed TGA file (image types 2 and 3: true colour and grey) holds
 // every pixel after its 18-byte header and its identification field.
 // stb_image reads past the end of a short one as if the pixels were there,
@@ -314,8 +307,8 @@ Image readImage(const std::filesystem::path& path, Encoding encoding,
                 std::vector<std::string>* warnings) {
   if (const std::optional<std::string> problem = fileKindOrSizeProblem(path, kLargestImageFile))
     throw fileError(path, *problem);
-  if (hasExtension(path, ".pcx")) return readPcxFile(path, encoding, warnings);
-  if (hasExtension(path, ".exr")) return readExr(path);
+  if (lowercaseExtension(path) == ".pcx") return readPcxFile(path, encoding, warnings);
+  if (lowercaseExtension(path) == ".exr") return readExr(path);
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"),
                                                              std::fclose);
   if (!file) throw fileError(path, because("cannot read", std::strerror(errno)));

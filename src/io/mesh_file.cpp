@@ -20,6 +20,7 @@
 #include <system_error>
 #include <vector>
 
+#include "core/text.hpp"
 #include "io/file_limits.hpp"
 #include "io/model_headers.hpp"
 #include "scene/vertex_normals.hpp"
@@ -29,12 +30,6 @@ namespace rise {
 namespace {
 
 const std::string kFormatExamples = ".obj, .ply, .md2, .gltf, .glb, .off or .3ds";
-
-std::string lowercase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 // The file must exist, be a regular file within the size RISE reads, open,
 // and hold something.
@@ -78,7 +73,7 @@ void checkFormatIsSupported(const std::filesystem::path& path, const Assimp::Imp
 // trusts them (and 5.2 loops forever on a PLY file that ends in its header).
 void checkHeader(const std::filesystem::path& path) {
   constexpr std::size_t kLongestHeader = 1 << 20;
-  const std::string extension = lowercase(path.extension().string());
+  const std::string extension = lowercaseExtension(path);
   if (extension == ".ply")
     checkPlyHeader(readStart(path, kLongestHeader), std::filesystem::file_size(path));
   if (extension == ".off")
@@ -275,15 +270,13 @@ std::optional<std::filesystem::path> findMd2Skin(const std::filesystem::path& mo
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(
            folder.empty() ? std::filesystem::path(".") : folder, error))
-    if (entry.is_regular_file() && lowercase(entry.path().extension().string()) == ".pcx")
+    if (entry.is_regular_file() && lowercaseExtension(entry.path()) == ".pcx")
       images.push_back(entry.path());
   if (images.size() == 1) return images.front();
   return std::nullopt;
 }
 
-bool isMd2File(const std::filesystem::path& path) {
-  return lowercase(path.extension().string()) == ".md2";
-}
+bool isMd2File(const std::filesystem::path& path) { return lowercaseExtension(path) == ".md2"; }
 
 int md2KeyframeCount(const std::filesystem::path& path) {
   checkReadable(path);

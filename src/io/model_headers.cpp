@@ -6,6 +6,7 @@
 #include <cstring>
 #include <optional>
 
+#include "core/text.hpp"
 #include "io/mesh_file.hpp"
 
 namespace rise {
@@ -145,12 +146,6 @@ std::vector<std::string> md2SkinNames(const Md2Header& header, std::span<const s
 }
 
 namespace {
-
-std::string lowercase(std::string_view text) {
-  std::string lower(text);
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return lower;
-}
 
 std::vector<std::string_view> wordsOf(std::string_view line) {
   std::vector<std::string_view> words;

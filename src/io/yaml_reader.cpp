@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <utility>
 
+#include "core/text.hpp"
+
 namespace rise {
 
 namespace {
@@ -14,13 +16,15 @@ namespace {
 constexpr std::size_t kLongestValueShown = 40;
 constexpr std::size_t kMostKeysListed = 6;
 
-std::string quoted(std::string_view text) { return std::string("'").append(text).append("'"); }
+std::string singleQuoted(std::string_view text) {
+  return std::string("'").append(text).append("'");
+}
 
 std::string describeScalar(const YamlNode& node) {
   std::string text = node.scalar();
   if (text.size() > kLongestValueShown) text = text.substr(0, kLongestValueShown - 3) + "...";
   if (node.isQuoted()) return "the string \"" + text + "\"";
-  return node.number() ? text : quoted(text);
+  return node.number() ? text : singleQuoted(text);
 }
 
 std::string describeSequence(const YamlNode& node) {
@@ -44,13 +48,6 @@ std::string describeMap(const YamlNode& node) {
     keys.push_back(entry.first.isScalar() ? entry.first.scalar() : "?");
   return (keys.size() == 1 ? "a map with the key " : "a map with the keys ") +
          joinedWithCommas(keys);
-}
-
-std::string lowercase(std::string_view text) {
-  std::string lower(text);
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return lower;
 }
 
 // The optimal string alignment distance: the Levenshtein edit distance with
@@ -165,7 +162,7 @@ std::string suggestAlternative(std::string_view word, const std::vector<std::str
   // Close enough when at most half the letters of the longer word differ:
   // "radus" is "radius", but "n" is not "ks".
   if (best && 2 * bestDistance <= std::max(word.size(), best->size()))
-    return "did you mean " + quoted(*best) + "?";
+    return "did you mean " + singleQuoted(*best) + "?";
   return "expected one of: " + joinedWithCommas(candidates);
 }
 
@@ -255,8 +252,8 @@ std::vector<MapEntry> readMap(const Field& field, std::string_view expectation,
       return entry.key == key.scalar();
     });
     if (repeated)
-      failAt(key.mark(), "duplicate key " + quoted(key.scalar()) + " in " + std::string(mapName) +
-                             "; a key may appear only once");
+      failAt(key.mark(), "duplicate key " + singleQuoted(key.scalar()) + " in " +
+                             std::string(mapName) + "; a key may appear only once");
     entries.push_back(MapEntry{key.scalar(), key.mark(), keyAndValue.second});
   }
   return entries;
@@ -268,21 +265,21 @@ CheckedMap::CheckedMap(const Field& field, std::string name, std::vector<std::st
       entries_(readMap(field, "a map with the keys " + joinedWithCommas(allowedKeys), name_)) {
   for (const MapEntry& entry : entries_) {
     if (std::find(allowedKeys.begin(), allowedKeys.end(), entry.key) == allowedKeys.end())
-      failAt(entry.keyMark, "unknown key " + quoted(entry.key) + " in " + name_ + "; " +
+      failAt(entry.keyMark, "unknown key " + singleQuoted(entry.key) + " in " + name_ + "; " +
                                 suggestAlternative(entry.key, allowedKeys));
   }
 }
 
 Field CheckedMap::required(std::string_view key) const {
   std::optional<Field> field = optional(key);
-  if (!field) failAt(mark_, name_ + " is missing " + quoted(key));
+  if (!field) failAt(mark_, name_ + " is missing " + singleQuoted(key));
   return *std::move(field);
 }
 
 std::optional<Field> CheckedMap::optional(std::string_view key) const {
   for (const MapEntry& entry : entries_) {
     if (entry.key == key)
-      return makeField(entry.value, quoted(key) + " in " + name_, entry.keyMark);
+      return makeField(entry.value, singleQuoted(key) + " in " + name_, entry.keyMark);
   }
   return std::nullopt;
 }
