@@ -306,9 +306,15 @@ class HybridPass {
     const std::uint64_t shadowRays = traced.shadowRays, tests = traced.intersections.tests;
     const std::uint64_t mirrorOrGlassRays = traced.reflectionRays + traced.refractionRays;
     SingleRayChoices whitted;
-    const bool recording = recording_.trees && recording_.trees->wantsTreeOf({x, y});
-    RayTree tree{{x, y}, recording_.index, Vec2(x, y) + pass_.pixelOffset};
-    RayTree* const treeHere = recording ? &tree : nullptr;
+    // A tree is made only for the pixel recorded.
+    std::optional<RayTree> tree;
+    if (recording_.trees && recording_.trees->wantsTreeOf({x, y})) {
+      tree.emplace();
+      tree->pixel = {x, y};
+      tree->sample = recording_.index;
+      tree->raster = Vec2(x, y) + pass_.pixelOffset;
+    }
+    RayTree* const treeHere = tree ? &*tree : nullptr;
     SampleResult sample;
     if (pixel.verdict != Verdict::FromItemBuffer) {
       ++counters.counts[pixel.verdict == Verdict::Outside ? kOutside : kInside];
@@ -318,7 +324,7 @@ class HybridPass {
       const Hit* hit = pixel.item.shape >= 0 ? &pixel.hit : nullptr;
       sample = shadeFirstHit(context_, rayAt(x, y), hit, whitted, traced, treeHere);
     }
-    if (recording) recording_.trees->recordTree(std::move(tree));
+    if (tree) recording_.trees->recordTree(std::move(*tree));
     pixel.mirrorOrGlass = traced.reflectionRays + traced.refractionRays > mirrorOrGlassRays;
     counters.counts[kSpawning] += traced.shadowRays > shadowRays || pixel.mirrorOrGlass;
     counters.counts[kMirrorOrGlass] += pixel.mirrorOrGlass;
@@ -335,10 +341,10 @@ class HybridPass {
   // full primary ray and those that spawned mirror or glass rays marked.
   Step raysStep(const PixelRect& band, const HybridCounters& counters) {
     const auto count = [&](Count kind) { return static_cast<double>(counters.counts[kind]); };
-    Step step{"rays", "rows " + std::to_string(band.y0) + " to " + std::to_string(band.y1 - 1) +
+    Step step("rays", "rows " + std::to_string(band.y0) + " to " + std::to_string(band.y1 - 1) +
                           " shaded by rays: " + std::to_string(counters.traced.rays()) + " rays, " +
                           std::to_string(counters.traced.intersections.tests) +
-                          " intersection tests"};
+                          " intersection tests");
     step.values = {
         {"primary_rays_from_item_buffer", count(kFromItemBuffer)},
         {"fallback_pixels", count(kOutside) + count(kInside)},

@@ -316,7 +316,7 @@ class DepthSorter {
 // Painting a piece, in the band's part.
 Step paintStep(const ScreenGeometry& pieces, int piece, const RasterFrame& frame) {
   const std::span<const Vec3> corners = pieces.cornersOf(pieces.polygons[piece]);
-  if (!frame.steps()->wantsDetail(pixelBoundsOf(corners))) return {"paint"};
+  if (!frame.steps()->wantsDetail(pixelBoundsOf(corners))) return Step("paint", "");
   Step step{"paint", "paint piece " + std::to_string(piece) + " (face " +
                          std::to_string(frame.sceneFaceOf(pieces.polygons[piece].face)) +
                          ") over what is there"};

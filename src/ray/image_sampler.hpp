@@ -78,7 +78,10 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
 template <typename Trace>
 SampleResult traceRecorded(TileTrace& tile, const glm::ivec2& pixel, int i, const Vec2& offset,
                            Rng& rng, const Trace& trace) {
-  RayTree tree{pixel, i, Vec2(pixel) + offset};
+  RayTree tree;
+  tree.pixel = pixel;
+  tree.sample = i;
+  tree.raster = Vec2(pixel) + offset;
   const SampleResult sample = trace(pixel, i, rng, tile.counters, &tree);
   tile.steps()->recordTree(std::move(tree));
   return sample;

@@ -61,6 +61,9 @@ struct StepTable {
 };
 
 struct Step {
+  Step() = default;
+  Step(std::string kind, std::string text) : kind(std::move(kind)), text(std::move(text)) {}
+
   std::string kind;  // the algorithm's word for it: "window", "compare", "scanline"...
   std::string text;  // the step in a sentence
   std::vector<std::pair<std::string, double>> values;
