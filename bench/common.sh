@@ -59,11 +59,17 @@ start_benchmark() {
   mkdir -p "$out"
 }
 
-# Prints the number under `key` in the JSON file, to the millisecond.
-json_seconds() {
-  python3 -c 'import json, sys; print("%.3f" % json.load(open(sys.argv[1]))[sys.argv[2]])' \
-    "$1" "$2" 2>/dev/null || die "no $2 in $1"
+# Prints the value under `key` in the JSON file $1: as it is, or a number
+# with $3 decimals.
+json_value() {
+  python3 -c 'import json, sys
+value = json.load(open(sys.argv[1]))[sys.argv[2]]
+print(value if sys.argv[3] == "" else "%.*f" % (int(sys.argv[3]), value))' \
+    "$1" "$2" "${3-}" 2>/dev/null || die "no $2 in $1"
 }
+
+# Prints the number under `key` in the JSON file, to the millisecond.
+json_seconds() { json_value "$1" "$2" 3; }
 
 # The smallest of the numbers on standard input.
 smallest() { sort -g | head -n 1; }

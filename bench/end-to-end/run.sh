@@ -35,12 +35,8 @@ EOF
 # shellcheck source=bench/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 
-runs=3
-threads=2
-out=out/bench-end-to-end
-build="build-release"
-declare -A value_options=([--runs]=runs [--threads]=threads [--out]=out)
-declare -A flag_options=()
+runs=3 threads=2 out=out/bench-end-to-end build=build-release
+declare -A value_options=([--runs]=runs [--threads]=threads [--out]=out) flag_options=()
 parse_options "$@"
 require_count --runs "$runs" 1
 require_count --threads "$threads" 1

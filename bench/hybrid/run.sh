@@ -32,12 +32,6 @@ require_count --threads "$threads" 1
 make_mesh_once "$out/bumpy-sphere.ply"
 cp bench/hybrid/million-mirror.yaml "$out/"
 
-# One value of a render's statistics JSON, with `decimals` places.
-stat() {
-  python3 -c 'import json, sys; print("%.*f" % (int(sys.argv[3]), json.load(open(sys.argv[1]))[sys.argv[2]]))' \
-    "$1" "$2" "$3" 2>/dev/null || die "no $2 in $1"
-}
-
 # Renders one row $runs times ($1: a file name, then rise's options); prints
 # the best render_seconds and leaves the statistics of the best run in
 # $out/$1.json.
@@ -47,7 +41,7 @@ best_render() {
   for ((run = 1; run <= runs; ++run)); do
     "$build/rise" render -o "$out/$name.png" --threads "$threads" --stats "$out/$name.run.json" \
       "$@" >"$out/$name.log" 2>&1 || die "RISE failed; see $out/$name.log"
-    seconds="$(stat "$out/$name.run.json" render_seconds 4)"
+    seconds="$(json_value "$out/$name.run.json" render_seconds 4)"
     if [[ -z "$best" ]] || awk -v a="$seconds" -v b="$best" 'BEGIN { exit !(a < b) }'; then
       best="$seconds"
       mv "$out/$name.run.json" "$out/$name.json"
@@ -79,9 +73,9 @@ for row in "${SCENES[@]}"; do
     w="$out/$name-$samples-ray-tracing.json" h="$out/$name-$samples-hybrid.json"
     lines+=("$(printf '| %-26s | %7s | %11s | %10s | %6s | %7s | %9s | %9s | %8s |' "$label" \
       "$samples" "$whitted" "$hybrid" "$(ratio "$whitted" "$hybrid")" \
-      "$(share "$(stat "$w" primary_rays 0)" "$(stat "$w" rays 0)")" \
-      "$(stat "$h" fallback_pixels 0)" "$(stat "$h" item_buffer_seconds 3)" \
-      "$(stat "$h" ray_pass_seconds 3)")")
+      "$(share "$(json_value "$w" primary_rays 0)" "$(json_value "$w" rays 0)")" \
+      "$(json_value "$h" fallback_pixels 0)" "$(json_value "$h" item_buffer_seconds 3)" \
+      "$(json_value "$h" ray_pass_seconds 3)")")
     echo "  $label, $samples samples: Whitted $whitted s, hybrid $hybrid s" >&2
   done
 done

@@ -31,21 +31,13 @@ EOF
 # shellcheck source=bench/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 
-frames=5
-threads=2
-out=out/bench-raster
-build=build
-declare -A value_options=([--frames]=frames [--threads]=threads [--out]=out)
-declare -A flag_options=()
-parse_options "$@"
+frames=5 threads=2 out=out/bench-raster build=build
+declare -A value_options=([--frames]=frames [--threads]=threads [--out]=out) flag_options=()
+start_benchmark "$@"
 require_count --frames "$frames" 1
 require_count --threads "$threads" 1
-
-enter_repository
-[[ -x "$build/rise" ]] || die "no RISE executable at $build/rise (build it, or pass BUILD_DIR)"
 [[ -x "$build/bench/rise_raster_bench" ]] ||
   die "no $build/bench/rise_raster_bench (built with the benchmarks: scripts/install-deps --bench)"
-mkdir -p "$out"
 
 # Renders a scene with `rise render` $frames times; prints the best render_seconds.
 best_render() {

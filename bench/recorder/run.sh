@@ -37,14 +37,9 @@ source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 
 before=1afea8b
 after=2ef5930
-runs=3
-threads=2
-jobs=2
-out=out/bench-recorder
-build=""
+runs=3 threads=2 jobs=2 out=out/bench-recorder build=""
 declare -A value_options=([--before]=before [--after]=after [--runs]=runs [--threads]=threads
-  [--jobs]=jobs [--out]=out)
-declare -A flag_options=()
+  [--jobs]=jobs [--out]=out) flag_options=()
 parse_options "$@"
 [[ -z "$build" ]] || die "takes no build directory: it builds --before and --after itself"
 require_count --runs "$runs" 1

@@ -23,27 +23,11 @@ EOF
 # shellcheck source=bench/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 
-runs=1
-threads=0
-out=out/bench-table1
-build=build
-declare -A value_options=([--runs]=runs [--threads]=threads [--out]=out)
-declare -A flag_options=()
-parse_options "$@"
+runs=1 threads=0 out=out/bench-table1 build=build
+declare -A value_options=([--runs]=runs [--threads]=threads [--out]=out) flag_options=()
+start_benchmark "$@"
 require_count --runs "$runs" 1
 require_count --threads "$threads" 0
-
-# Paths given by the caller are relative to where it stands; the renders run
-# from the repository root, where the scene is.
-enter_repository
-[[ -x "$build/rise" ]] || die "no RISE executable at $build/rise (build it, or pass BUILD_DIR)"
-mkdir -p "$out"
-
-# One value of a render's statistics JSON.
-stat() {
-  python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))[sys.argv[2]])' "$1" "$2" \
-    2>/dev/null || die "no $2 in $1"
-}
 
 # Renders one row ($1: a file name, $2: the structure, then the sampling
 # options) and prints its render seconds.
@@ -55,7 +39,7 @@ render() {
     --stats "$stats" "$@" >"$log" 2>&1; then
     die "RISE failed; see $log"
   fi
-  stat "$stats" render_seconds
+  json_value "$stats" render_seconds
 }
 
 # Prints the best of the runs of one row, and leaves the statistics of its
@@ -91,14 +75,14 @@ for row in "${ROWS[@]}"; do
   seconds="$(best_of_runs "$name" "$accel" "${sampling[@]}")"
   stats="$out/$name.json"
   lines+=("$(printf '| %-33s | %10s | %8.3f | %-7s | %9.1f | %11.1f |' "$label" "$report" \
-    "$seconds" "$accel" "$(stat "$stats" intersection_tests_per_ray)" \
-    "$(stat "$stats" nodes_visited_per_ray)")")
+    "$seconds" "$accel" "$(json_value "$stats" intersection_tests_per_ray)" \
+    "$(json_value "$stats" nodes_visited_per_ray)")")
 done
 
 first="$out/spheres.json"
 echo
 printf '%s at %sx%s on %s threads (the report: one processor of 2004)\n' "$SCENE" \
-  "$(stat "$first" width)" "$(stat "$first" height)" "$(stat "$first" threads)"
+  "$(json_value "$first" width)" "$(json_value "$first" height)" "$(json_value "$first" threads)"
 echo
 printf '| %-33s | %10s | %8s | %-7s | %9s | %11s |\n' "Table 1 row" "report (s)" "RISE (s)" \
   "--accel" "tests/ray" "volumes/ray"
