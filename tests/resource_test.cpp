@@ -357,5 +357,18 @@ INSTANTIATE_TEST_SUITE_P(Resources, BadInputUnderLimits, ::testing::ValuesIn(bad
                            return info.param.name;
                          });
 
+// Checking a model's header reads the file, not as much as the largest file
+// RISE would take (128 MB): the report's MD2 scene loads in 172 MB of address
+// space, shared libraries included.
+TEST(Resources, CheckingAModelTakesMemoryInProportionToItsFile) {
+#ifdef RISE_SANITIZED_BUILD
+  GTEST_SKIP() << "a sanitized build takes its address space by terabytes";
+#endif
+  Limits limits;
+  limits.addressSpaceBytes = 172'000'000;
+  const Outcome outcome = runRise({"validate", (kExamples / "md2.yaml").string()}, limits);
+  EXPECT_EQ(outcome.status, 0) << outcome.output;
+}
+
 }  // namespace
 }  // namespace rise

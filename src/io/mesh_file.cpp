@@ -46,10 +46,14 @@ void checkReadable(const std::filesystem::path& path) {
   if (file.peek() == std::ifstream::traits_type::eof()) throw MeshFileError("the file is empty");
 }
 
-// The first `most` bytes of a file that checkReadable passed.
+// The first `most` bytes of a file that checkReadable passed (a regular
+// file, so of a known size: no more is allocated than it holds).
 std::string readStart(const std::filesystem::path& path, std::size_t most) {
   std::ifstream file(path, std::ios::binary);
-  std::string start(most, '\0');
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  std::string start(error ? most : static_cast<std::size_t>(std::min<std::uintmax_t>(most, size)),
+                    '\0');
   file.read(start.data(), static_cast<std::streamsize>(start.size()));
   start.resize(static_cast<std::size_t>(file.gcount()));
   return start;
