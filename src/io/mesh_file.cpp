@@ -161,9 +161,8 @@ const aiScene& readWithAssimp(Assimp::Importer& importer, const std::filesystem:
   // Invalid normals (all zero, NaN) are dropped, to be computed like missing
   // ones. RISE computes those itself: Assimp's smoothing cannot split a
   // vertex that faces share across a crease (the corners of an OFF box).
-  unsigned int steps = aiProcess_Triangulate | aiProcess_FindInvalidData;
-  if (!isMd2File(path)) steps |= aiProcess_JoinIdenticalVertices;
-  const aiScene* scene = importer.ApplyPostProcessing(steps);
+  const aiScene* scene =
+      importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_FindInvalidData);
   if (scene == nullptr) throw MeshFileError(explained(tidied(importer.GetErrorString())));
   return *scene;
 }
@@ -180,8 +179,11 @@ Mat4 toMat4(const aiMatrix4x4& m) {
 
 // One Assimp mesh in its own space: its triangles (points and lines are left
 // out) and a unit normal at each vertex: the file's, zero where one of them is
-// unusable, or computed when the file has none.
-MeshGeometry geometryOf(const aiMesh& mesh) {
+// unusable, or computed when the file has none. Assimp gives each corner of a
+// face a vertex of its own; they are joined again (`joinVertices`), but for
+// an MD2 model, whose keyframes must keep the same vertices however their
+// points meet.
+MeshGeometry geometryOf(const aiMesh& mesh, bool joinVertices) {
   MeshGeometry geometry;
   geometry.positions.reserve(mesh.mNumVertices);
   if (mesh.HasNormals()) geometry.normals.reserve(mesh.mNumVertices);
@@ -208,21 +210,23 @@ MeshGeometry geometryOf(const aiMesh& mesh) {
     }
     geometry.triangles.push_back(triangle);
   }
+  if (joinVertices) geometry = withIdenticalVerticesJoined(geometry);
   return mesh.HasNormals() ? geometry : withVertexNormals(geometry, kCreaseAngleDegrees);
 }
 
 // Appends the meshes of `node` and of the nodes under it, each placed by the
 // transforms from the root down to its node.
 void appendNode(const aiScene& scene, const aiNode& node, const Mat4& parentToFile,
-                MeshGeometry& model) {
+                bool joinVertices, MeshGeometry& model) {
   const Mat4 nodeToFile = parentToFile * toMat4(node.mTransformation);
   for (unsigned int i = 0; i < node.mNumMeshes; ++i) {
     if (node.mMeshes[i] >= scene.mNumMeshes)
       throw MeshFileError("a node refers to a mesh that the file does not have");
-    append(model, transformed(geometryOf(*scene.mMeshes[node.mMeshes[i]]), nodeToFile));
+    append(model,
+           transformed(geometryOf(*scene.mMeshes[node.mMeshes[i]], joinVertices), nodeToFile));
   }
   for (unsigned int i = 0; i < node.mNumChildren; ++i)
-    appendNode(scene, *node.mChildren[i], nodeToFile, model);
+    appendNode(scene, *node.mChildren[i], nodeToFile, joinVertices, model);
 }
 
 MeshGeometry readModel(const std::filesystem::path& path, int md2Keyframe) {
@@ -232,7 +236,8 @@ MeshGeometry readModel(const std::filesystem::path& path, int md2Keyframe) {
   checkHeader(path);
   const aiScene& scene = readWithAssimp(importer, path, md2Keyframe);
   MeshGeometry model;
-  if (scene.mRootNode != nullptr) appendNode(scene, *scene.mRootNode, Mat4(1.0f), model);
+  if (scene.mRootNode != nullptr)
+    appendNode(scene, *scene.mRootNode, Mat4(1.0f), !isMd2File(path), model);
   if (model.triangles.empty()) throw MeshFileError("the file has no triangles");
   if (!std::all_of(model.positions.begin(), model.positions.end(),
                    [](const Vec3& v) { return isFinite(v); }))

@@ -1,7 +1,10 @@
 #include "scene/mesh_geometry.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <numeric>
 #include <tuple>
 #include <utility>
 
@@ -22,7 +25,54 @@ void appendAttribute(std::vector<T>& whole, std::size_t wholeVertices, const std
     whole.insert(whole.end(), part.begin(), part.end());
 }
 
+// A vertex's attributes as bits, in which any two vertices compare and sort,
+// those with coordinates that are not numbers too.
+using VertexBits = std::array<std::uint32_t, 8>;
+
+VertexBits bitsOf(const MeshGeometry& geometry, std::size_t vertex) {
+  VertexBits bits{};
+  const auto put = [&](std::size_t at, float value) {
+    bits[at] = std::bit_cast<std::uint32_t>(value);
+  };
+  for (int axis = 0; axis < 3; ++axis) put(axis, geometry.positions[vertex][axis]);
+  if (!geometry.normals.empty())
+    for (int axis = 0; axis < 3; ++axis) put(3 + axis, geometry.normals[vertex][axis]);
+  if (!geometry.uvs.empty())
+    for (int axis = 0; axis < 2; ++axis) put(6 + axis, geometry.uvs[vertex][axis]);
+  return bits;
+}
+
 }  // namespace
+
+MeshGeometry withIdenticalVerticesJoined(const MeshGeometry& geometry) {
+  const std::size_t count = geometry.positions.size();
+  std::vector<VertexBits> bits(count);
+  for (std::size_t vertex = 0; vertex < count; ++vertex) bits[vertex] = bitsOf(geometry, vertex);
+  std::vector<std::uint32_t> order(count);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return std::tie(bits[a], a) < std::tie(bits[b], b);
+  });
+  // The first of each run of equal vertices stands for the run.
+  std::vector<std::uint32_t> first(count);
+  for (std::size_t i = 0; i < count; ++i)
+    first[order[i]] =
+        i > 0 && bits[order[i]] == bits[order[i - 1]] ? first[order[i - 1]] : order[i];
+
+  MeshGeometry joined;
+  std::vector<int> number(count, -1);
+  for (std::uint32_t vertex = 0; vertex < count; ++vertex) {
+    if (first[vertex] != vertex) continue;
+    number[vertex] = static_cast<int>(joined.positions.size());
+    joined.positions.push_back(geometry.positions[vertex]);
+    if (!geometry.normals.empty()) joined.normals.push_back(geometry.normals[vertex]);
+    if (!geometry.uvs.empty()) joined.uvs.push_back(geometry.uvs[vertex]);
+  }
+  joined.triangles.reserve(geometry.triangles.size());
+  for (const auto& [a, b, c] : geometry.triangles)
+    joined.triangles.push_back({number[first[a]], number[first[b]], number[first[c]]});
+  return joined;
+}
 
 MeshGeometry transformed(MeshGeometry geometry, const Mat4& map) {
   const Mat3 normalMap = glm::transpose(glm::inverse(Mat3(map)));

@@ -30,6 +30,13 @@ MeshGeometry transformed(MeshGeometry geometry, const Mat4& map);
 // with zeros.
 void append(MeshGeometry& whole, const MeshGeometry& part);
 
+// The geometry with the vertices that are the same in every attribute
+// (position, normal and texture coordinates, bit for bit) made one, numbered
+// in the order in which they first appear; the triangles keep their order.
+// Some readers give each corner of each face a vertex of its own (Assimp's
+// PLY and OBJ readers do).
+MeshGeometry withIdenticalVerticesJoined(const MeshGeometry& geometry);
+
 // For each vertex, a number shared by all the vertices at its point (meshes
 // often repeat a corner once for each of its texture coordinates), from 0 up
 // without gaps. A vertex with a coordinate that is not a number, which no

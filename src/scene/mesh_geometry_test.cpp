@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 
 #include "support/shape_testing.hpp"
 
@@ -55,6 +56,34 @@ TEST(MeshGeometry, AppendingShiftsTheIndicesAndPadsMissingAttributes) {
   ASSERT_EQ(whole.uvs.size(), 6u);
   EXPECT_EQ(whole.uvs[2], Vec2(0.5f));
   EXPECT_EQ(whole.uvs[5], Vec2(0.0f));
+}
+
+TEST(MeshGeometry, JoiningKeepsOneVertexForEachSetOfAttributesInTheOrderTheyFirstAppear) {
+  // A square as a reader gives it, a vertex for each corner of each face; the
+  // top-right corner seen by the second face has other texture coordinates.
+  const Vec3 a(0.0f), b(1.0f, 0.0f, 0.0f), c(1.0f, 1.0f, 0.0f), d(0.0f, 1.0f, 0.0f);
+  const MeshGeometry corners{
+      {b, a, c, c, a, d},
+      {},
+      {Vec2(1, 0), Vec2(0, 0), Vec2(1, 1), Vec2(9, 9), Vec2(0, 0), Vec2(0, 1)},
+      {{0, 1, 2}, {3, 4, 5}}};
+  const MeshGeometry joined = withIdenticalVerticesJoined(corners);
+  EXPECT_EQ(joined.positions, (std::vector<Vec3>{b, a, c, c, d}));
+  EXPECT_EQ(joined.uvs,
+            (std::vector<Vec2>{Vec2(1, 0), Vec2(0, 0), Vec2(1, 1), Vec2(9, 9), Vec2(0, 1)}));
+  EXPECT_TRUE(joined.normals.empty());
+  EXPECT_EQ(joined.triangles, (std::vector<std::array<int, 3>>{{0, 1, 2}, {3, 1, 4}}));
+}
+
+TEST(MeshGeometry, JoiningTellsVerticesApartByTheirNormalsAndKeepsThoseThatAreNotNumbers) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const Vec3 p(1.0f, 2.0f, 3.0f), up(0.0f, 1.0f, 0.0f), side(1.0f, 0.0f, 0.0f);
+  const MeshGeometry corners{
+      {p, p, p, Vec3(nan), Vec3(nan), p}, {up, side, up, up, up, up}, {}, {{0, 1, 2}, {3, 4, 5}}};
+  const MeshGeometry joined = withIdenticalVerticesJoined(corners);
+  ASSERT_EQ(joined.positions.size(), 3u);  // p facing up, p facing aside, the one not a number
+  EXPECT_EQ(joined.normals, (std::vector<Vec3>{up, side, up}));
+  EXPECT_EQ(joined.triangles, (std::vector<std::array<int, 3>>{{0, 1, 0}, {2, 2, 0}}));
 }
 
 }  // namespace
