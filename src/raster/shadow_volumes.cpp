@@ -51,6 +51,12 @@ namespace {
 // of it: far enough that even a face whose edge the light sees at a grazing
 // angle passes every point of the scene.
 constexpr float kReachPerExtent = 1000.0f;
+// The eye may stand on the plane between two faces' volumes, as under the
+// middle of a square split into two triangles, and be found in neither; the
+// volumes it is in are counted at a point this far from it, as a fraction of
+// the scene's extent, in a direction no scene is built along.
+constexpr float kEyeNudgePerExtent = 1e-5f;
+const Vec3 kEyeNudgeDirection = glm::normalize(Vec3(0.267f, 0.534f, 0.802f));
 
 // A light as its volumes see it: one point, or a direction.
 struct LightSource {
@@ -143,7 +149,9 @@ ShadowVolumes::ShadowVolumes(const Scene& scene, const TessellatedScene& tessell
 
 void ShadowVolumes::buildVolumes(const Scene& scene, const TessellatedScene& tessellated,
                                  const Vec3& eye) {
-  const float reach = kReachPerExtent * sceneExtent(tessellated, eye);
+  const float extent = sceneExtent(tessellated, eye);
+  const float reach = kReachPerExtent * extent;
+  const Vec3 nudgedEye = eye + kEyeNudgePerExtent * extent * kEyeNudgeDirection;
   for (int l = 0; l < lightCount_; ++l) {
     const LightSource light(*scene.lights[static_cast<std::size_t>(l)]);
     NetEdges edges;
@@ -155,7 +163,7 @@ void ShadowVolumes::buildVolumes(const Scene& scene, const TessellatedScene& tes
                                     light.towards(corners[0]));
       if (facing == 0.0f || (facing < 0.0f && face.cullable)) continue;
       if (facing < 0.0f) std::swap(corners[1], corners[2]);
-      countAtEye_[l] += inVolume(light, corners, eye) ? 1 : 0;
+      countAtEye_[l] += inVolume(light, corners, nudgedEye) ? 1 : 0;
       for (int i = 0; i < 3; ++i) addEdge(edges, corners[i], corners[(i + 1) % 3]);
     }
     for (const auto& [edge, net] : edges) {
