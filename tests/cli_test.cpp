@@ -188,6 +188,48 @@ TEST_F(RiseCommand, ListsTheAlgorithmsWithTheirCitations) {
   EXPECT_NE(result.output.find("Whitted"), std::string::npos);
 }
 
+// Shadow volumes are the scanline's: the other visible-surface algorithms
+// refuse them, naming the one that draws them, and write nothing; the ray
+// tracers, which do not read --shadows, only note it.
+TEST_F(RiseCommand, ShadowVolumesAreTheScanlinesAlone) {
+  for (const char* algorithm : {"z-buffer", "depth-sort", "area-subdivision"}) {
+    const CommandResult refused =
+        runRise("render " + example("classic.yaml") + " --width 32 --shadows volume -a " +
+                algorithm + " -o " + file("refused.png").string());
+    EXPECT_EQ(refused.status, 2) << algorithm;
+    EXPECT_NE(refused.output.find("--shadows volume: " + std::string(algorithm) +
+                                  " does not draw these shadows; only scanline does"),
+              std::string::npos)
+        << refused.output;
+    EXPECT_FALSE(fs::exists(file("refused.png"))) << algorithm;
+  }
+  const CommandResult compared =
+      runRise("compare " + example("classic.yaml") + " --width 32 --shadows volume -o " +
+              file("compare").string());
+  EXPECT_EQ(compared.status, 2);
+  EXPECT_NE(compared.output.find("only scanline does"), std::string::npos) << compared.output;
+
+  const CommandResult counted =
+      runRise("render " + example("classic.yaml") + " --width 48 --shadows volume -a scanline -o " +
+              file("volumes.png").string() + " --stats " + file("stats.json").string());
+  ASSERT_EQ(counted.status, 0) << counted.output;
+  std::ifstream statsFile(file("stats.json"));
+  const nlohmann::json stats = nlohmann::json::parse(statsFile);
+  for (const char* counter : {"shadow_volume_faces", "shadow_volume_tests",
+                              "shadow_volume_crossings", "shadowed_pixel_lights"})
+    EXPECT_GT(stats[counter].get<double>(), 0.0) << counter;
+  EXPECT_EQ(stats["eye_in_volumes"], 0);
+
+  const CommandResult traced =
+      runRise("render " + example("classic.yaml") + " --width 32 --shadows volume -o " +
+              file("traced.png").string());
+  EXPECT_EQ(traced.status, 0) << traced.output;
+  EXPECT_NE(traced.output.find("ray-tracing does not read --shadows"), std::string::npos);
+
+  const CommandResult listed = runRise("algorithms");
+  EXPECT_NE(listed.output.find("shadows: map, volume"), std::string::npos) << listed.output;
+}
+
 TEST_F(RiseCommand, ValidatesWithoutRendering) {
   const CommandResult result = runRise("validate " + example("classic.yaml"));
   EXPECT_EQ(result.status, 0) << result.output;

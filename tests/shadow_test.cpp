@@ -1,11 +1,14 @@
-// The z-buffer's and the scanline's shadow maps against Whitted's shadow
-// rays: at each pixel, the surface the primary ray meets is in shadow when a
-// light in front of it does not wholly reach it along a shadow ray; the
-// raster image is in shadow where it is darker than the same render without
-// shadows. The two masks must agree but for a few pixels, and those only
-// near an edge of a shadow or of a shape, where the map's texels and the
-// tessellation's facets may put the edge a pixel to either side, and where
-// percentage-closer filtering darkens a ramp a texel or two wide.
+// The z-buffer's and the scanline's shadow maps, and the scanline's shadow
+// volumes, against Whitted's shadow rays: at each pixel, the surface the
+// primary ray meets is in shadow when a light in front of it does not wholly
+// reach it along a shadow ray; the raster image is in shadow where it is
+// darker than the same render without shadows. With maps the two masks must
+// agree but for a few pixels, and those only near an edge of a shadow or of a
+// shape, where the map's texels and the tessellation's facets may put the
+// edge a pixel to either side, and where percentage-closer filtering darkens
+// a ramp a texel or two wide. Shadow volumes do not sample: away from those
+// edges they disagree at a few pixels of a scene, where the facets of a
+// tessellated surface meet a smooth one's shadow.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -78,11 +81,11 @@ struct Disagreement {
 };
 
 Disagreement againstShadowRays(const Scene& scene, std::string_view algorithm,
-                               RenderSettings settings) {
+                               RenderSettings settings, ShadowMethod method = ShadowMethod::Map) {
   settings.tessellation = 32;
   settings.shadows = ShadowMethod::None;
   const RenderResult unshadowed = render(algorithm, scene, settings);
-  settings.shadows = ShadowMethod::Map;
+  settings.shadows = method;
   const RenderResult shadowed = render(algorithm, scene, settings);
   const RayMasks masks = shadowRayMasks(scene, settings.width, settings.height);
   Disagreement found;
@@ -120,10 +123,10 @@ TEST(ShadowMaps, AgreeWithShadowRaysOnTheClassicScene) {
   }
 }
 
-// A ball over a plane, wide and low, lit from the side by a point light,
-// with a smaller map: a long shadow, foreshortened.
-TEST(ShadowMaps, AgreeWithShadowRaysOnABallOverAPlane) {
-  const Scene scene = loadScene(R"(
+// A ball over a plane, wide and low, lit from the side by a point light: a
+// long shadow, foreshortened.
+Scene ballOverAPlane() {
+  return loadScene(R"(
 image: {width: 240, height: 90}
 camera: {position: [0, 3, -7], look_at: [0, 0.5, 0], fov: 35}
 ambient: [0.2, 0.2, 0.2]
@@ -135,13 +138,107 @@ objects:
   - plane:  {point: [0, 0, 0], normal: [0, 1, 0], material: matte}
   - sphere: {center: [0, 1.2, 0], radius: 0.8, material: matte}
 )",
-                                "ball.yaml");
+                   "ball.yaml");
+}
+
+// With a smaller map.
+TEST(ShadowMaps, AgreeWithShadowRaysOnABallOverAPlane) {
+  const Scene scene = ballOverAPlane();
   RenderSettings settings = settingsFor(scene);
   settings.shadowMapSize = 512;
   const Disagreement found = againstShadowRays(scene, "z-buffer", settings);
   EXPECT_GT(found.shadowed, 1500);
   EXPECT_LE(found.pixels, 120);
   EXPECT_LE(found.awayFromEdges, 2);
+}
+
+// Shadow volumes: a scene of opaque shapes at a size and shape of its own.
+Scene opaqueShapes(const std::string& lights, int width, int height) {
+  Scene scene = loadScene(R"(
+camera: {position: [1, 2.5, -6], look_at: [0, 0.6, 0], fov: 45}
+ambient: [0.2, 0.2, 0.2]
+lights: [)" + lights + R"(]
+materials:
+  matte: {color: [0.7, 0.7, 0.6], ka: 0.2, kd: 0.8}
+  shiny: {color: [0.8, 0.2, 0.2], ka: 0.1, kd: 0.6, ks: 0.4, n: 30}
+objects:
+  - plane:    {point: [0, 0, 0], normal: [0, 1, 0], material: matte}
+  - sphere:   {center: [-1.2, 0.8, 0.5], radius: 0.8, material: shiny}
+  - box:      {min: [0.5, 0, -0.5], max: [1.5, 1.2, 0.5], material: matte}
+  - cylinder: {base: [-0.3, 0, -1.8], axis: [0, 1, 0], radius: 0.3, height: 1.2, material: shiny}
+  - cone:     {base: [1.8, 0, -1.6], axis: [0, 1, 0], radius: 0.4, height: 1.0, material: matte}
+  - triangle: {vertices: [[-2, 1.6, 1.5], [-0.5, 1.9, 1.5], [-1.2, 2.6, 2.2]], material: shiny}
+)",
+                          "shapes.yaml");
+  scene.image.width = width;
+  scene.image.height = height;
+  return scene;
+}
+
+TEST(ShadowVolumes, AgreeWithShadowRaysAwayFromEdgesUnderAPointLight) {
+  const Scene scene = opaqueShapes("{point: {position: [-3, 5, -3], color: [1, 1, 1]}}", 157, 203);
+  const Disagreement found =
+      againstShadowRays(scene, "scanline", settingsFor(scene), ShadowMethod::Volume);
+  EXPECT_GT(found.shadowed, 1800);
+  EXPECT_LE(found.pixels, 400);
+  EXPECT_LE(found.awayFromEdges, 25);
+}
+
+TEST(ShadowVolumes, AgreeWithShadowRaysAwayFromEdgesOnABallOverAPlane) {
+  const Scene scene = ballOverAPlane();
+  const Disagreement found =
+      againstShadowRays(scene, "scanline", settingsFor(scene), ShadowMethod::Volume);
+  EXPECT_GT(found.shadowed, 1500);
+  EXPECT_LE(found.awayFromEdges, 2);
+}
+
+// A directional light and a point light together, each with its volumes.
+TEST(ShadowVolumes, AgreeWithShadowRaysUnderADirectionalLight) {
+  const Scene scene = opaqueShapes(
+      "{directional: {direction: [1, -1.5, 0.7], color: [0.6, 0.6, 0.6]}}, "
+      "{point: {position: [3, 4, -2], color: [0.5, 0.5, 0.5]}}",
+      230, 120);
+  const Disagreement found =
+      againstShadowRays(scene, "scanline", settingsFor(scene), ShadowMethod::Volume);
+  EXPECT_GT(found.shadowed, 1400);
+  EXPECT_LE(found.awayFromEdges, 15);
+}
+
+// The eye stands in the shadow of a roof it does not see: every count starts
+// at 1, and the floor around it is in shadow though no volume's face lies
+// between them.
+TEST(ShadowVolumes, CountFromTheVolumesTheEyeIsIn) {
+  const Scene scene = loadScene(R"(
+image: {width: 120, height: 160}
+camera: {position: [0, 1, -4], look_at: [0, 0.3, 0], fov: 50}
+ambient: [0.2, 0.2, 0.2]
+lights:
+  - point: {position: [0, 6, -4], color: [1, 1, 1]}
+materials:
+  matte: {color: [0.7, 0.7, 0.6], ka: 0.2, kd: 0.8}
+objects:
+  - plane:  {point: [0, 0, 0], normal: [0, 1, 0], material: matte}
+  - box:    {min: [-2, 3, -6], max: [2, 3.2, -2], material: matte}
+  - sphere: {center: [0.5, 0.5, 1.5], radius: 0.5, material: matte}
+)",
+                                "roof.yaml");
+  RenderSettings settings = settingsFor(scene);
+  settings.shadows = ShadowMethod::Volume;
+  EXPECT_EQ(render("scanline", scene, settings).stats.value("eye_in_volumes"), 1.0);
+  const Disagreement found = againstShadowRays(scene, "scanline", settings, ShadowMethod::Volume);
+  EXPECT_GT(found.shadowed, 3000);
+  EXPECT_LE(found.awayFromEdges, 2);
+}
+
+// The classic scene with its glass made opaque (a count says in or out, not
+// how much light gets through), at a size of its own.
+TEST(ShadowVolumes, AgreeWithShadowRaysOnTheClassicSceneWithoutGlass) {
+  Scene scene = example("classic.yaml", 210, 130);
+  for (Material& material : scene.materials) material.transmission = 0.0f;
+  const Disagreement found =
+      againstShadowRays(scene, "scanline", settingsFor(scene), ShadowMethod::Volume);
+  EXPECT_GT(found.shadowed, 800);
+  EXPECT_LE(found.awayFromEdges, 12);
 }
 
 }  // namespace

@@ -63,6 +63,18 @@ void noteUnreadOptions(const CLI::App& command, const AlgorithmDescription& algo
   }
 }
 
+bool drawsShadowsAsked(const AlgorithmDescription& algorithm, ShadowMethod method) {
+  if (!algorithm.reads(Option::Shadows) || algorithm.draws(method)) return true;
+  std::vector<std::string_view> able;
+  for (const Renderer* renderer : allRenderers())
+    if (renderer->description().reads(Option::Shadows) && renderer->description().draws(method))
+      able.push_back(renderer->name());
+  std::cerr << "rise: --shadows " << shadowMethodName(method) << ": " << algorithm.name
+            << " does not draw these shadows; "
+            << (able.empty() ? "no algorithm does" : "only " + joined(able) + " does") << "\n";
+  return false;
+}
+
 std::vector<std::string> algorithmNames() {
   std::vector<std::string> names;
   for (const Renderer* renderer : allRenderers()) names.emplace_back(renderer->name());

@@ -54,6 +54,10 @@ std::filesystem::path defaultOutput(const std::string& scenePath, const std::str
 // Says which of the options given the algorithm does not read.
 void noteUnreadOptions(const CLI::App& command, const AlgorithmDescription& algorithm);
 
+// Whether the algorithm draws the shadows --shadows asks for, or does not
+// read the option; when not, says so and which algorithms do.
+bool drawsShadowsAsked(const AlgorithmDescription& algorithm, ShadowMethod method);
+
 std::vector<std::string> algorithmNames();
 
 }  // namespace rise::cli

@@ -47,6 +47,8 @@ std::optional<PixelRect> regionOf(const std::vector<int>& values, const RenderSe
 
 int explain(const ExplainOptions& options) {
   const Renderer& renderer = *findRenderer(options.algorithm);
+  if (!drawsShadowsAsked(renderer.description(), options.settings.request.settings.shadows))
+    return kExitBadInput;
   const std::filesystem::path directory =
       options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
   if (!outputsAreWritable({{directory / "index.html", "-o " + directory.string()}},

@@ -66,6 +66,8 @@ void writeBuffer(const RenderResult& result, const std::string& name,
 int render(const RenderOptions& options, const CLI::App& command) {
   const Renderer& renderer = *findRenderer(options.algorithm);
   const AlgorithmDescription& algorithm = renderer.description();
+  if (!drawsShadowsAsked(algorithm, options.settings.request.settings.shadows))
+    return kExitBadInput;
   for (const std::string& name : options.buffers) {
     if (!algorithm.writes(name)) {
       std::cerr << "rise: --aov " << name << ": " << algorithm.name << " has no '" << name
@@ -133,6 +135,8 @@ int compare(const CompareOptions& options) {
         std::find(options.algorithms.begin(), options.algorithms.end(), renderer->name()) ==
             options.algorithms.end())
       continue;
+    if (!drawsShadowsAsked(renderer->description(), options.settings.request.settings.shadows))
+      return kExitBadInput;
     renderers.push_back(renderer);
     names.push_back(renderer->name());
     families.push_back(renderer->description().family);
@@ -187,14 +191,16 @@ int validate(const std::string& scenePath) {
 void listAlgorithms() {
   for (const Renderer* renderer : allRenderers()) {
     const AlgorithmDescription& algorithm = renderer->description();
-    std::vector<std::string_view> options, effects;
+    std::vector<std::string_view> options, effects, shadows;
     for (Option option : algorithm.options) options.push_back(toString(option));
     for (Effect effect : algorithm.effects) effects.push_back(toString(effect));
+    for (ShadowMethod method : algorithm.shadowMethods) shadows.push_back(shadowMethodName(method));
     std::cout << algorithm.name << "\n    " << algorithm.summary << "\n    " << algorithm.citation
               << "\n    family: " << toString(algorithm.family)
               << "\n    buffers: " << joined(algorithm.buffers)
               << "\n    options: " << joined(options) << "\n    effects: " << joined(effects)
               << "\n";
+    if (!shadows.empty()) std::cout << "    shadows: " << joined(shadows) << "\n";
   }
 }
 

@@ -48,6 +48,12 @@ CLI::Validator finitePositiveNumber() {
       "> 0");
 }
 
+std::map<std::string, ShadowMethod> shadowMethodNames() {
+  std::map<std::string, ShadowMethod> names;
+  for (ShadowMethod method : kAllShadowMethods) names.emplace(shadowMethodName(method), method);
+  return names;
+}
+
 std::map<std::string, Accel> accelNames() {
   std::map<std::string, Accel> names;
   for (Accel accel : kAllAccels) names.emplace(accelName(accel), accel);
@@ -57,9 +63,9 @@ std::map<std::string, Accel> accelNames() {
 void addShadowOptions(CLI::App& command, RenderSettings& settings) {
   command
       .add_option("--shadows", settings.shadows,
-                  "Visible-surface algorithms' shadows: none (default) or map")
-      ->transform(
-          choices<ShadowMethod>({{"none", ShadowMethod::None}, {"map", ShadowMethod::Map}}));
+                  "Visible-surface algorithms' shadows: none (default), map (shadow maps) or "
+                  "volume (shadow volumes, the scanline's)")
+      ->transform(choices(shadowMethodNames()));
   command.add_option("--shadow-map-size", settings.shadowMapSize, "Shadow maps: texels a side")
       ->capture_default_str()
       ->check(CLI::Range(16, 8192));

@@ -6,8 +6,12 @@ namespace rise {
 
 RasterFrame::RasterFrame(int width, int height, const Color& background,
                          const ScreenGeometry& screen, const SurfaceShader& shader,
-                         const Workers& workers, StepRecorder* steps)
-    : screen_(screen), shader_(shader), steps_(steps), background_(background) {
+                         const Workers& workers, StepRecorder* steps, ShadowVolumes* shadowVolumes)
+    : screen_(screen),
+      shader_(shader),
+      steps_(steps),
+      shadowVolumes_(shadowVolumes),
+      background_(background) {
   // Filling five image-sized buffers is a fair share of a frame of a large
   // image: the render's workers share it.
   const std::array<Color, 5> fills = {background, Color(kInfinity), Color(0.0f), Color(-1.0f),
@@ -23,9 +27,15 @@ RasterFrame::RasterFrame(int width, int height, const Color& background,
   cost_ = &(result_.buffers["cost"] = std::move(images[4]));
 }
 
+ShadedPixel RasterFrame::shadeAt(int x, int y, int face) const {
+  const Vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+  if (!shadowVolumes_ || isTransparent(face)) return shader_.shade(face, centre);
+  const PixelShadows shadows = shadowVolumes_->at(x, y);
+  return shader_.shade(face, centre, shadows.any() ? &shadows : nullptr);
+}
+
 void RasterFrame::setVisible(int x, int y, int face) {
-  const ShadedPixel pixel =
-      shader_.shade(face, Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+  const ShadedPixel pixel = shadeAt(x, y, face);
   result_.image.at(x, y) = pixel.color;
   depth_->at(x, y) = Color(pixel.depth);
   normal_->at(x, y) = pixel.normal;
@@ -48,8 +58,7 @@ Color RasterFrame::filterOf(int face) const {
 }
 
 PixelWrite RasterFrame::writeOf(int x, int y, int face, float inverseDepth, bool kept) const {
-  const ShadedPixel pixel =
-      shader_.shade(face, Vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f));
+  const ShadedPixel pixel = shadeAt(x, y, face);
   return {x, y, pixel.color, screen_.faces[face].sceneFace, inverseDepth, kept};
 }
 

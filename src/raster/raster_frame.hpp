@@ -3,11 +3,15 @@
 // auxiliary buffers ("depth", "normal", "face"); pixels no face is seen at
 // keep the background. The algorithm also charges each pixel the work it
 // spent on it, for the "cost" buffer, and reports its steps to the frame's
-// recorder when it has one (visible_faces.hpp).
+// recorder when it has one (visible_faces.hpp). With shadow volumes, each
+// opaque face is shaded with the lights its pixel is in the shadow of, as the
+// scanline counted them before it showed the pixel; transparent faces, in
+// front of that point, take every light.
 #pragma once
 
 #include <cstdint>
 
+#include "raster/shadow_volumes.hpp"
 #include "raster/surface_shader.hpp"
 #include "raster/visible_faces.hpp"
 
@@ -16,7 +20,8 @@ namespace rise {
 class RasterFrame final : public VisibleFaces {
  public:
   RasterFrame(int width, int height, const Color& background, const ScreenGeometry& screen,
-              const SurfaceShader& shader, const Workers& workers, StepRecorder* steps);
+              const SurfaceShader& shader, const Workers& workers, StepRecorder* steps,
+              ShadowVolumes* shadowVolumes = nullptr);
 
   int width() const override { return result_.image.width(); }
   int height() const override { return result_.image.height(); }
@@ -34,6 +39,8 @@ class RasterFrame final : public VisibleFaces {
   void addCost(int x, int y, float work) override { cost_->at(x, y) += Color(work); }
 
   StepRecorder* steps() const override { return steps_; }
+  // The shadow volumes the algorithm is to count, or nullptr.
+  ShadowVolumes* shadowVolumes() const { return shadowVolumes_; }
   // Screen face `face` drawn at pixel (x, y) at inverse depth w, for a
   // step's record; `kept` false where it lost a depth test there.
   PixelWrite writeOf(int x, int y, int face, float inverseDepth, bool kept = true) const;
@@ -52,10 +59,12 @@ class RasterFrame final : public VisibleFaces {
  private:
   // What a transparent face lets through: its transmission times its colour.
   Color filterOf(int face) const;
+  ShadedPixel shadeAt(int x, int y, int face) const;
 
   const ScreenGeometry& screen_;
   const SurfaceShader& shader_;
   StepRecorder* steps_;
+  ShadowVolumes* shadowVolumes_;
   Color background_;
   RenderResult result_;
   Image* depth_;

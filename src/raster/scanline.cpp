@@ -2,17 +2,8 @@
 // form of the original RISE report, which follows Dreux (1988): a depth buffer
 // and a face buffer only one scanline wide.
 //
-// The image is built one scanline at a time, top to bottom:
-//  - the edge table: every polygon edge, bucket-sorted by the first scanline
-//    whose centre it crosses (Achar_Min_Max, Init_Bucket_Sort);
-//  - the active edge list: the edges crossing the current scanline, with
-//    where they cross it. Going down a scanline, each edge's crossing moves
-//    by its constant step dx/dy (an incremental update), the edges that end
-//    leave the list and the table's bucket for the scanline joins it
-//    (Remover_Arestas, Inserir_Arestas);
-//  - spans: the list is kept in polygon order, so each active polygon's
-//    edges lie side by side, and its span on the scanline runs from the
-//    leftmost to the rightmost of them (Limites_da_Face);
+// The image is built one scanline at a time, top to bottom, by the edge
+// table, the active edge list and the spans of raster/active_edges.hpp:
 //  - the pixel centres of each span, left edge in and right edge out (the
 //    top-left rule), are compared in depth with the scanline's depth buffer,
 //    and the nearer polygon's number is kept in the face buffer
@@ -20,12 +11,16 @@
 //    buffers cleared for the next (gerar_scanline, Atualizar_Buffers).
 //
 // The memory of the buffers ("scanline_buffer_bytes") grows with the image's
-// width only, where the z-buffer's grows with its area. The two edges of a
-// shared border start from the same end and take the same steps, so their
-// crossings agree exactly and no pixel between two polygons is drawn twice or
-// missed. The image is cut into bands of scanlines that threads sweep in
-// parallel, each band starting its edges at its first scanline, with buffers
-// of its own. Cost of a pixel: the depth tests made at it.
+// width only, where the z-buffer's grows with its area. The image is cut
+// into bands of scanlines that threads sweep in parallel, each band starting
+// its edges at its first scanline, with buffers of its own. Cost of a pixel:
+// the depth tests made at it.
+//
+// Shadows, with --shadows volume, after F. C. Crow, "Shadow algorithms for
+// computer graphics", SIGGRAPH 1977: the faces of the shadow volumes are swept
+// down the scanlines beside the scene's polygons, and at each pixel those in
+// front of the depth buffer's surface are counted (raster/shadow_volumes.cpp)
+// before the scanline is shaded.
 //
 // Transparency along the spans, after D. S. Kay and D. Greenberg,
 // "Transparency for computer synthesized images", SIGGRAPH 1979: a
@@ -45,10 +40,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "raster/active_edges.hpp"
 #include "raster/bands.hpp"
 #include "raster/transparency.hpp"
 
@@ -62,8 +59,8 @@ const AlgorithmDescription& ScanlineRenderer::description() const {
       "M. Dreux, A simple effective linear-growth scanline algorithm, ICONCG 1988; G. "
       "S. Watkins, PhD thesis, University of Utah, 1970; W. J. Bouknight, CACM 13(9), "
       "1970; D. S. Kay and D. Greenberg, Transparency for computer synthesized images, "
-      "SIGGRAPH 1979",
-      {Effect::Transparency});
+      "SIGGRAPH 1979; F. C. Crow, Shadow algorithms for computer graphics, SIGGRAPH 1977",
+      {Effect::Transparency}, {ShadowMethod::Volume});
   return description;
 }
 
@@ -72,34 +69,19 @@ namespace {
 struct ScanlineCounters {
   std::uint64_t depthTests = 0;
   std::uint64_t pixelsWritten = 0;
-  std::uint64_t edges = 0;             // entries of the edge tables
-  std::uint64_t activeEdgeVisits = 0;  // active edges, summed over the scanlines
-  std::uint64_t activeEdgesMax = 0;
+  EdgeListCounters edgeList;
   std::uint64_t blends = 0;
   std::uint64_t layersMax = 0;  // transparent faces kept on one scanline, at the most
 
   ScanlineCounters& operator+=(const ScanlineCounters& other) {
     depthTests += other.depthTests;
     pixelsWritten += other.pixelsWritten;
-    edges += other.edges;
-    activeEdgeVisits += other.activeEdgeVisits;
-    activeEdgesMax = std::max(activeEdgesMax, other.activeEdgesMax);
+    edgeList += other.edgeList;
     blends += other.blends;
     layersMax = std::max(layersMax, other.layersMax);
     return *this;
   }
 };
-
-// An edge of a polygon, where it crosses the current scanline's centre.
-struct ActiveEdge {
-  float x;
-  float step;        // how far x moves from one scanline to the next: dx / dy
-  int endScanline;   // the first scanline it no longer crosses
-  int polygonOrder;  // the polygon's place in the band's list
-};
-
-// The first scanline whose centre y + 1/2 is at or below `y`.
-int firstScanlineFrom(float y) { return static_cast<int>(std::ceil(y - 0.5f)); }
 
 class BandSweep {
  public:
@@ -109,84 +91,32 @@ class BandSweep {
             VisibleFaces& faces, RasterFrame* blending, ScanlineCounters& counters)
       : screen_(screen),
         band_(band),
-        polygons_(polygons),
         faces_(faces),
         blending_(blending),
         counters_(counters),
-        edgeTable_(band.y1 - band.y0),
+        edges_(screen, band, polygons, counters.edgeList),
         lineInverseDepth_(faces.width(), 0.0f),
         lineFace_(faces.width(), -1),
         lineCost_(faces.width(), 0.0f),
-        lineLayers_(blending ? faces.width() : 0) {}
+        lineLayers_(blending ? faces.width() : 0) {
+    if (ShadowVolumes* volumes = blending ? blending->shadowVolumes() : nullptr)
+      shadowCount_.emplace(*volumes, band);
+  }
 
   void run() {
-    buildEdgeTable();
     for (int y = band_.y0; y < band_.y1; ++y) {
-      updateActiveEdges(y);
+      edges_.advanceTo(y);
       drawSpans(y);
+      if (shadowCount_) shadowCount_->countScanline(y, lineInverseDepth_);
       if (StepRecorder* steps = faces_.steps()) steps->record(scanlineStep(y), y);
       emitScanline(y);
     }
   }
 
  private:
-  void buildEdgeTable() {
-    for (int order = 0; order < static_cast<int>(polygons_.size()); ++order) {
-      const std::span<const Vec3> corners = screen_.cornersOf(screen_.polygons[polygons_[order]]);
-      for (std::size_t i = 0; i < corners.size(); ++i) {
-        const Vec3& from = corners[i];
-        const Vec3& to = corners[(i + 1) % corners.size()];
-        if (from.y == to.y) continue;  // horizontal: it crosses no scanline centre
-        const Vec3& top = from.y < to.y ? from : to;
-        const Vec3& bottom = from.y < to.y ? to : from;
-        const int first = std::max(firstScanlineFrom(top.y), band_.y0);
-        const int end = std::min(firstScanlineFrom(bottom.y), band_.y1);
-        if (first >= end) continue;
-        const float step = (bottom.x - top.x) / (bottom.y - top.y);
-        const float x = top.x + (static_cast<float>(first) + 0.5f - top.y) * step;
-        edgeTable_[first - band_.y0].push_back({x, step, end, order});
-        ++counters_.edges;
-      }
-    }
-  }
-
-  // From the previous scanline's list to this one's, kept in polygon order.
-  void updateActiveEdges(int y) {
-    std::erase_if(activeEdges_, [y](const ActiveEdge& edge) { return edge.endScanline <= y; });
-    for (ActiveEdge& edge : activeEdges_) edge.x += edge.step;
-    const std::vector<ActiveEdge>& entering = edgeTable_[y - band_.y0];
-    merged_.clear();
-    std::merge(activeEdges_.begin(), activeEdges_.end(), entering.begin(), entering.end(),
-               std::back_inserter(merged_), [](const ActiveEdge& a, const ActiveEdge& b) {
-                 return a.polygonOrder < b.polygonOrder;
-               });
-    activeEdges_.swap(merged_);
-    counters_.activeEdgeVisits += activeEdges_.size();
-    counters_.activeEdgesMax =
-        std::max<std::uint64_t>(counters_.activeEdgesMax, activeEdges_.size());
-  }
-
-  // Calls span(order, left, right) for each active polygon: its edges lie
-  // side by side in the list, and its span runs from the leftmost to the
-  // rightmost.
-  template <typename Span>
-  void forEachSpan(const Span& span) const {
-    for (std::size_t first = 0; first < activeEdges_.size();) {
-      const int order = activeEdges_[first].polygonOrder;
-      float left = kInfinity, right = -kInfinity;
-      std::size_t next = first;
-      for (; next < activeEdges_.size() && activeEdges_[next].polygonOrder == order; ++next) {
-        left = std::min(left, activeEdges_[next].x);
-        right = std::max(right, activeEdges_[next].x);
-      }
-      span(order, left, right);
-      first = next;
-    }
-  }
-
   void drawSpans(int y) {
-    forEachSpan([&](int order, float left, float right) {
-      const int face = screen_.polygons[polygons_[order]].face;
+    edges_.forEachSpan([&](int order, float left, float right) {
+      const int face = screen_.polygons[edges_.polygonAt(order)].face;
       if (blending_ && blending_->isTransparent(face))
         drawTransparentSpan(y, face, left, right);
       else
@@ -198,8 +128,7 @@ class BandSweep {
   template <typename Visit>
   void forEachCentre(int y, int face, float left, float right, const Visit& visit) {
     const ScreenFace& screenFace = screen_.faces[face];
-    const int x0 = std::max(firstScanlineFrom(left), 0);
-    const int x1 = std::min(firstScanlineFrom(right), faces_.width());
+    const auto [x0, x1] = centresOfSpan(left, right, faces_.width());
     const float centreY = static_cast<float>(y) + 0.5f;
     for (int x = x0; x < x1; ++x) {
       ++counters_.depthTests;
@@ -247,27 +176,26 @@ class BandSweep {
   Step scanlineStep(int y) const {
     Step step;
     step.kind = "scanline";
-    step.text = "scanline " + std::to_string(y) + ": " +
-                std::to_string(edgeTable_[y - band_.y0].size()) + " edges enter, " +
-                std::to_string(activeEdges_.size()) + " are active";
+    step.text = "scanline " + std::to_string(y) + ": " + std::to_string(edges_.entering(y).size()) +
+                " edges enter, " + std::to_string(edges_.active().size()) + " are active";
     const auto edgeRows = [&](const std::vector<ActiveEdge>& edges) {
       StepTable table{"", {"x", "dx/dy", "end scanline", "polygon"}, {}};
       for (const ActiveEdge& edge : edges)
         table.rows.push_back({edge.x, edge.step, static_cast<double>(edge.endScanline),
-                              static_cast<double>(polygons_[edge.polygonOrder])});
+                              static_cast<double>(edges_.polygonAt(edge.polygonOrder))});
       return table;
     };
-    step.tables.push_back(edgeRows(edgeTable_[y - band_.y0]));
+    step.tables.push_back(edgeRows(edges_.entering(y)));
     step.tables.back().title = "edges entering from the edge table";
-    step.tables.push_back(edgeRows(activeEdges_));
+    step.tables.push_back(edgeRows(edges_.active()));
     step.tables.back().title = "active edge list";
-    for (const ActiveEdge& edge : activeEdges_)
+    for (const ActiveEdge& edge : edges_.active())
       step.shapes.push_back(
           {StepShape::Kind::Point, "edge", {{edge.x, static_cast<float>(y) + 0.5f}}});
     StepTable spans{"spans", {"polygon", "face", "left", "right"}, {}};
     const float centre = static_cast<float>(y) + 0.5f;
-    forEachSpan([&](int order, float left, float right) {
-      const int polygon = polygons_[order];
+    edges_.forEachSpan([&](int order, float left, float right) {
+      const int polygon = edges_.polygonAt(order);
       spans.rows.push_back({static_cast<double>(polygon),
                             static_cast<double>(sceneFaceOf(screen_.polygons[polygon].face)), left,
                             right});
@@ -277,6 +205,7 @@ class BandSweep {
     step.tables.push_back(lineBuffers());
     if (StepTable layers = lineLayers(); !layers.rows.empty())
       step.tables.push_back(std::move(layers));
+    if (shadowCount_) step.tables.push_back(shadowCount_->countsTable());
     step.settled.push_back({0, y, faces_.width(), y + 1});
     return step;
   }
@@ -328,16 +257,15 @@ class BandSweep {
 
   const ScreenGeometry& screen_;
   const PixelRect& band_;
-  std::span<const int> polygons_;
   VisibleFaces& faces_;
   RasterFrame* blending_;
   ScanlineCounters& counters_;
-  std::vector<std::vector<ActiveEdge>> edgeTable_;  // a bucket per scanline of the band
-  std::vector<ActiveEdge> activeEdges_, merged_;
-  std::vector<float> lineInverseDepth_;  // 0: infinitely far
-  std::vector<int> lineFace_;            // -1: none
-  std::vector<float> lineCost_;          // the depth tests made at each pixel
-  TransparentRow lineLayers_;            // empty unless blending
+  ActiveEdgeList edges_;
+  std::vector<float> lineInverseDepth_;                  // 0: infinitely far
+  std::vector<int> lineFace_;                            // -1: none
+  std::vector<float> lineCost_;                          // the depth tests made at each pixel
+  TransparentRow lineLayers_;                            // empty unless blending
+  std::optional<ShadowVolumes::BandCount> shadowCount_;  // with shadow volumes alone
 };
 
 // Sweeps the image, blending transparent faces on `blending` unless it is
@@ -351,10 +279,10 @@ ScanlineCounters sweep(const ScreenGeometry& screen, const Workers& workers, Vis
       });
   stats.add("depth_tests", static_cast<double>(counters.depthTests));
   stats.add("pixels_written", static_cast<double>(counters.pixelsWritten));
-  stats.add("edge_table_entries", static_cast<double>(counters.edges));
+  stats.add("edge_table_entries", static_cast<double>(counters.edgeList.edges));
   stats.add("active_edges_per_scanline",
-            static_cast<double>(counters.activeEdgeVisits) / std::max(faces.height(), 1));
-  stats.add("active_edges_max", static_cast<double>(counters.activeEdgesMax));
+            static_cast<double>(counters.edgeList.activeEdgeVisits) / std::max(faces.height(), 1));
+  stats.add("active_edges_max", static_cast<double>(counters.edgeList.activeEdgesMax));
   stats.add("scanline_buffer_bytes",
             static_cast<double>(faces.width()) * (sizeof(float) + sizeof(int)) +
                 static_cast<double>(counters.layersMax) * TransparentRow::kBytesALayer);

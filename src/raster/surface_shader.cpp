@@ -49,19 +49,27 @@ SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessell
 
 void SurfaceShader::lightFaces(const Workers& workers) {
   faceLight_.resize(screen_.faces.size());
-  workers.forEachRange(
-      static_cast<int>(faceLight_.size()), kItemsPerRange, [&](int, int begin, int end) {
-        for (int f = begin; f < end; ++f) {
-          const SceneFace& face = tessellated_.faces[screen_.faces[f].sceneFace];
-          const SurfaceVertex& a = tessellated_.vertices[face.vertices[0]];
-          const SurfaceVertex& b = tessellated_.vertices[face.vertices[1]];
-          const SurfaceVertex& c = tessellated_.vertices[face.vertices[2]];
-          faceLight_[f] = splitLocalLight(
-              scene_, scene_.materials[face.material],
-              (a.position + b.position + c.position) / 3.0f,
-              towardsEye(planeNormal(a, b, c), sideSeen(screen_.faces[f])), eye_, shadows_);
-        }
-      });
+  workers.forEachRange(static_cast<int>(faceLight_.size()), kItemsPerRange,
+                       [&](int, int begin, int end) {
+                         for (int f = begin; f < end; ++f) faceLight_[f] = faceLight(f, shadows_);
+                       });
+}
+
+SplitLight SurfaceShader::faceLight(int f, const LightVisibility* shadows) const {
+  const SceneFace& face = tessellated_.faces[screen_.faces[f].sceneFace];
+  const SurfaceVertex& a = tessellated_.vertices[face.vertices[0]];
+  const SurfaceVertex& b = tessellated_.vertices[face.vertices[1]];
+  const SurfaceVertex& c = tessellated_.vertices[face.vertices[2]];
+  return splitLocalLight(
+      scene_, scene_.materials[face.material], (a.position + b.position + c.position) / 3.0f,
+      towardsEye(planeNormal(a, b, c), sideSeen(screen_.faces[f])), eye_, shadows);
+}
+
+SplitLight SurfaceShader::vertexLight(int v, int side, int material,
+                                      const LightVisibility* shadows) const {
+  const SurfaceVertex& vertex = tessellated_.vertices[v];
+  return splitLocalLight(scene_, scene_.materials[material], vertex.position,
+                         towardsEye(normalizedOrZero(vertex.normal), side), eye_, shadows);
 }
 
 void SurfaceShader::lightVertices(const Workers& workers) {
@@ -81,11 +89,8 @@ void SurfaceShader::lightVertices(const Workers& workers) {
     workers.forEachRange(
         static_cast<int>(vertexCount), kItemsPerRange, [&](int, int begin, int end) {
           for (int v = begin; v < end; ++v) {
-            if (material[side][v] < 0) continue;
-            const SurfaceVertex& vertex = tessellated_.vertices[v];
-            vertexLight_[side][v] =
-                splitLocalLight(scene_, scene_.materials[material[side][v]], vertex.position,
-                                towardsEye(normalizedOrZero(vertex.normal), side), eye_, shadows_);
+            if (material[side][v] >= 0)
+              vertexLight_[side][v] = vertexLight(v, side, material[side][v], shadows_);
           }
         });
   }
@@ -113,7 +118,8 @@ PixelFootprint SurfaceShader::uvFootprint(int face, const Vec2& centre,
   return {stepTo(centre + Vec2(1.0f, 0.0f)), stepTo(centre + Vec2(0.0f, 1.0f))};
 }
 
-ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
+ShadedPixel SurfaceShader::shade(int face, const Vec2& centre,
+                                 const LightVisibility* pixelShadows) const {
   const ScreenFace& screenFace = screen_.faces[face];
   const SceneFace& sceneFace = tessellated_.faces[screenFace.sceneFace];
   const Vec3 weights = screenFace.barycentricAt(centre);
@@ -134,15 +140,19 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
   Color color;
   switch (shading_) {
     case Shading::Flat:
-      color = faceLight_[face].with(colors);
+      color = (pixelShadows ? faceLight(face, pixelShadows) : faceLight_[face]).with(colors);
       break;
     case Shading::Gouraud: {
-      const std::vector<SplitLight>& lit = vertexLight_[side];
-      const auto& [ia, ib, ic] = sceneFace.vertices;
+      std::array<SplitLight, 3> lit;
+      for (int corner = 0; corner < 3; ++corner) {
+        const int vertex = sceneFace.vertices[corner];
+        lit[corner] = pixelShadows ? vertexLight(vertex, side, sceneFace.material, pixelShadows)
+                                   : vertexLight_[side][vertex];
+      }
       const Vec3 w = gouraudWeights(weights, {&a, &b, &c});
       const SplitLight interpolated{
-          w.x * lit[ia].byColor + w.y * lit[ib].byColor + w.z * lit[ic].byColor,
-          w.x * lit[ia].byKs + w.y * lit[ib].byKs + w.z * lit[ic].byKs};
+          w.x * lit[0].byColor + w.y * lit[1].byColor + w.z * lit[2].byColor,
+          w.x * lit[0].byKs + w.y * lit[1].byKs + w.z * lit[2].byKs};
       color = interpolated.with(colors);
       break;
     }
@@ -155,9 +165,9 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre) const {
                            surface.dpdv);
         surface.shadingNormal = shadingNormal(material, surface);
       }
-      color =
-          localLight(scene_, material, colors, surface.position, towardsEye(surface.normal, side),
-                     towardsEye(surface.shadingNormal, side), eye_, shadows_);
+      color = localLight(scene_, material, colors, surface.position,
+                         towardsEye(surface.normal, side), towardsEye(surface.shadingNormal, side),
+                         eye_, pixelShadows ? pixelShadows : shadows_);
       break;
   }
   return {color, glm::length(surface.position - eye_), surface.normal};

@@ -9,10 +9,12 @@
 // Shadows come from `shadows` when it is given (shadow maps), asked where the
 // model is evaluated: at every pixel with Phong shading, at the centroid or
 // the vertices with flat or Gouraud shading, whose shadows are as coarse as
-// their light. Without it every light reaches every surface facing it. What
-// else the ray tracer adds to the model is left out: no mirror reflection or
-// refraction; a transparent material is drawn opaque, with the model's
-// (1 - t) dimming of its ambient and diffuse light.
+// their light. Shadow volumes answer for a pixel instead, and a pixel in a
+// shadow takes the model evaluated again where the shading evaluates it,
+// with those answers: its shadow is as sharp whatever the shading. Without it every light reaches
+// every surface facing it. What else the ray tracer adds to the model is left out: no mirror
+// reflection or refraction; a transparent material is drawn opaque, with the model's (1 - t)
+// dimming of its ambient and diffuse light.
 #pragma once
 
 #include <array>
@@ -40,8 +42,10 @@ class SurfaceShader {
                 const ScreenGeometry& screen, const ViewProjection& view, Shading shading,
                 const Workers& workers, const LightVisibility* shadows = nullptr);
 
-  // The screen face `face` seen at the raster point `centre`.
-  ShadedPixel shade(int face, const Vec2& centre) const;
+  // The screen face `face` seen at the raster point `centre`; with
+  // `pixelShadows`, what reaches the point seen there from each light.
+  ShadedPixel shade(int face, const Vec2& centre,
+                    const LightVisibility* pixelShadows = nullptr) const;
   const Material& materialOf(int face) const {
     return scene_.materials[tessellated_.faces[screen_.faces[face].sceneFace].material];
   }
@@ -50,6 +54,8 @@ class SurfaceShader {
   PixelFootprint uvFootprint(int face, const Vec2& centre, const SurfacePoint& surface) const;
   void lightFaces(const Workers& workers);
   void lightVertices(const Workers& workers);
+  SplitLight faceLight(int face, const LightVisibility* shadows) const;
+  SplitLight vertexLight(int vertex, int side, int material, const LightVisibility* shadows) const;
 
   const Scene& scene_;
   const TessellatedScene& tessellated_;

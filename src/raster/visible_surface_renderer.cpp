@@ -25,9 +25,12 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
 
 AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
                                              std::string_view citation,
-                                             std::vector<Effect> ownEffects) {
+                                             std::vector<Effect> ownEffects,
+                                             std::vector<ShadowMethod> ownShadowMethods) {
   std::vector<Effect> effects = {Effect::Shadows, Effect::DepthOfField, Effect::MotionBlur};
   effects.insert(effects.end(), ownEffects.begin(), ownEffects.end());
+  std::vector<ShadowMethod> shadowMethods = {ShadowMethod::Map};
+  shadowMethods.insert(shadowMethods.end(), ownShadowMethods.begin(), ownShadowMethods.end());
   return {
       name,
       summary,
@@ -35,7 +38,9 @@ AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_
       Family::VisibleSurface,
       {"depth", "normal", "cost", "face", "shadow-map"},
       {Option::Shading, Option::Culling, Option::Tessellation, Option::PlaneSize, Option::Shadows},
-      std::move(effects)};
+      std::move(effects),
+      {},
+      std::move(shadowMethods)};
 }
 
 TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& settings,
@@ -187,10 +192,13 @@ RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
   std::optional<ShadowMaps> shadowMaps;
   if (settings.shadows == ShadowMethod::Map)
     shadowMaps.emplace(scene, tessellated, shadowMapSettings(settings), workers);
+  std::optional<ShadowVolumes> shadowVolumes;
+  if (settings.shadows == ShadowMethod::Volume && description().draws(ShadowMethod::Volume))
+    shadowVolumes.emplace(scene, tessellated, view, workers);
   const SurfaceShader shader(scene, tessellated, screen, view, settings.shading, workers,
                              shadowMaps ? &*shadowMaps : nullptr);
   RasterFrame frame(settings.width, settings.height, scene.image.background, screen, shader,
-                    workers, observer.stepRecorder());
+                    workers, observer.stepRecorder(), shadowVolumes ? &*shadowVolumes : nullptr);
 
   Stats stats;
   addProjectionStats(stats, screen);
@@ -205,6 +213,7 @@ RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
     shadowMaps->addStats(stats);
     result.buffers["shadow-map"] = shadowMaps->picture();
   }
+  if (shadowVolumes) shadowVolumes->addStats(stats);
   result.stats = std::move(stats);
   return result;
 }

@@ -79,10 +79,11 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen);
 // The description of a visible-surface algorithm: what the family shares
 // (its buffers, the settings it reads, the effects of the accumulation
 // passes and of shadow maps) with the algorithm's own name, summary,
-// citation and effects.
+// citation, effects and ways of drawing shadows.
 AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
                                              std::string_view citation,
-                                             std::vector<Effect> ownEffects = {});
+                                             std::vector<Effect> ownEffects = {},
+                                             std::vector<ShadowMethod> ownShadowMethods = {});
 
 // The scene tessellated as the settings ask, planes centred under the camera,
 // moving shapes where they are at `time`, a fraction of the shutter interval

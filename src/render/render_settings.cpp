@@ -14,6 +14,18 @@ std::string_view shadingName(Shading shading) {
   return "?";
 }
 
+std::string_view shadowMethodName(ShadowMethod method) {
+  switch (method) {
+    case ShadowMethod::None:
+      return "none";
+    case ShadowMethod::Map:
+      return "map";
+    case ShadowMethod::Volume:
+      return "volume";
+  }
+  return "?";
+}
+
 std::string_view accelName(Accel accel) {
   switch (accel) {
     case Accel::None:

@@ -28,9 +28,13 @@ inline constexpr Shading kAllShadings[] = {Shading::Flat, Shading::Gouraud, Shad
 std::string_view shadingName(Shading shading);  // as on the command line: "gouraud"
 
 // How the visible-surface algorithms find shadows: not at all (every light
-// reaches every surface facing it), or by Williams' shadow maps
-// (raster/shadow_map.cpp).
-enum class ShadowMethod { None, Map };
+// reaches every surface facing it), by Williams' shadow maps
+// (raster/shadow_map.cpp), or by Crow's shadow volumes, which the scanline
+// algorithm alone counts (raster/shadow_volumes.cpp).
+enum class ShadowMethod { None, Map, Volume };
+inline constexpr ShadowMethod kAllShadowMethods[] = {ShadowMethod::None, ShadowMethod::Map,
+                                                     ShadowMethod::Volume};
+std::string_view shadowMethodName(ShadowMethod method);  // as on the command line: "volume"
 
 // How to render, whatever the algorithm. The image size comes from the scene
 // unless the command line overrides it.

@@ -66,6 +66,11 @@ bool AlgorithmDescription::reads(Option option) const {
   return std::find(options.begin(), options.end(), option) != options.end();
 }
 
+bool AlgorithmDescription::draws(ShadowMethod method) const {
+  return method == ShadowMethod::None ||
+         std::find(shadowMethods.begin(), shadowMethods.end(), method) != shadowMethods.end();
+}
+
 void cropToRegion(RenderResult& result, const RenderSettings& settings) {
   if (!settings.region) return;
   result.image = cropped(result.image, *settings.region);

@@ -89,9 +89,14 @@ struct AlgorithmDescription {
   // compare` counts the pixels where the two differ and the intersection
   // tests this one spared.
   std::string_view sameImageAs = {};
+  // How it draws shadows when --shadows asks (ShadowMethod::None, no
+  // shadows, goes without saying); empty for an algorithm that does not read
+  // the option.
+  std::vector<ShadowMethod> shadowMethods = {};
 
   bool writes(std::string_view buffer) const;
   bool reads(Option option) const;
+  bool draws(ShadowMethod method) const;
 };
 
 // One image synthesis algorithm. The command line, the studio, the tests and
