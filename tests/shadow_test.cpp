@@ -8,7 +8,8 @@
 // edge a pixel to either side, and where percentage-closer filtering darkens
 // a ramp a texel or two wide. Shadow volumes do not sample: away from those
 // edges they disagree at a few pixels of a scene, where the facets of a
-// tessellated surface meet a smooth one's shadow.
+// tessellated surface meet a smooth one's shadow (on a scene of flat shapes,
+// whose polygons are the shapes themselves, at none).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -190,6 +191,40 @@ TEST(ShadowVolumes, AgreeWithShadowRaysAwayFromEdgesOnABallOverAPlane) {
       againstShadowRays(scene, "scanline", settingsFor(scene), ShadowMethod::Volume);
   EXPECT_GT(found.shadowed, 1500);
   EXPECT_LE(found.awayFromEdges, 2);
+}
+
+// Where every shape is its own polygons (boxes, a polygon, a triangle, a
+// mesh, the floor), the volumes are the shadows' exact shapes: the two
+// masks disagree only at the pixels an edge passes through.
+TEST(ShadowVolumes, AgreeWithShadowRaysExactlyAwayFromEdgesWhereTheShapesAreFlat) {
+  Scene scene = loadScene(R"(
+camera: {position: [-1.5, 3, -6.5], look_at: [0.3, 0.5, 0], fov: 45}
+ambient: [0.2, 0.2, 0.2]
+lights:
+  - point: {position: [-3, 5, -3], color: [0.7, 0.7, 0.7]}
+  - directional: {direction: [1, -1.5, 0.7], color: [0.4, 0.4, 0.4]}
+materials:
+  matte: {color: [0.7, 0.7, 0.6], ka: 0.2, kd: 0.8}
+  shiny: {color: [0.8, 0.2, 0.2], ka: 0.1, kd: 0.6, ks: 0.4, n: 30}
+objects:
+  - plane:    {point: [0, 0, 0], normal: [0, 1, 0], material: matte}
+  - box:      {min: [0.5, 0, -0.5], max: [1.5, 1.2, 0.5], material: shiny}
+  - box:      {min: [-1.6, 0.9, -0.4], max: [-0.4, 1.1, 0.8], material: matte}
+  - box:      {min: [-1.3, 0, 0], max: [-1.1, 0.9, 0.2], material: matte}
+  - polygon:  {vertices: [[-2.5, 0, 2], [-1, 0, 2], [-1, 1.8, 2.2], [-2.5, 1.8, 2.2]], material: matte}
+  - triangle: {vertices: [[0, 1.6, 1.5], [1.5, 1.9, 1.5], [0.8, 2.6, 2.2]], material: shiny}
+  - mesh:
+      vertices: [[0, 1, -1.5], [0.5, 0.5, -1.5], [0, 0.5, -1], [-0.5, 0.5, -1.5], [0, 0.5, -2], [0, 0, -1.5]]
+      faces: [[0, 2, 1], [0, 3, 2], [0, 4, 3], [0, 1, 4], [5, 1, 2], [5, 2, 3], [5, 3, 4], [5, 4, 1]]
+      material: shiny
+)",
+                          "flat.yaml");
+  scene.image.width = 173;
+  scene.image.height = 141;
+  const Disagreement found =
+      againstShadowRays(scene, "scanline", settingsFor(scene), ShadowMethod::Volume);
+  EXPECT_GT(found.shadowed, 800);
+  EXPECT_EQ(found.awayFromEdges, 0);
 }
 
 // A directional light and a point light together, each with its volumes.
