@@ -48,10 +48,12 @@ CLI::Validator finitePositiveNumber() {
       "> 0");
 }
 
-std::map<std::string, Accel> accelNames() {
-  std::map<std::string, Accel> names;
-  for (Accel accel : kAllAccels) names.emplace(accelName(accel), accel);
-  return names;
+// The values of an enumeration by their names on the command line.
+template <typename Enum, std::size_t Count, typename Name>
+CLI::CheckedTransformer choicesNamedBy(const Enum (&all)[Count], Name name) {
+  std::map<std::string, Enum> names;
+  for (Enum value : all) names.emplace(name(value), value);
+  return choices(std::move(names));
 }
 
 void addShadowOptions(CLI::App& command, RenderSettings& settings) {
@@ -120,7 +122,7 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
   command
       .add_option("--accel", settings.accel,
                   "Acceleration structure: none, spheres, bvh (default) or embree")
-      ->transform(CLI::CheckedTransformer(accelNames(), CLI::ignore_case));
+      ->transform(choicesNamedBy(kAllAccels, accelName));
   command
       .add_option("--shading", settings.shading,
                   "Visible-surface algorithms: flat, gouraud or phong (default)")
@@ -139,6 +141,11 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
       ->capture_default_str()
       ->check(finitePositiveNumber());
   addShadowOptions(command, settings);
+  command
+      .add_option("--transparency", settings.transparency,
+                  "z-buffer: transparent surfaces sorted back to front (default) or by the "
+                  "a-buffer's fragment lists")
+      ->transform(choicesNamedBy(kAllTransparencies, transparencyName));
 }
 
 CLI::CheckedTransformer encodings() {

@@ -363,7 +363,8 @@ ScanlineCounters sweep(const ScreenGeometry& screen, const Workers& workers, Vis
 
 }  // namespace
 
-void ScanlineRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
+void ScanlineRenderer::resolveVisibility(const ScreenGeometry& screen,
+                                         const RenderSettings& /*settings*/, const Workers& workers,
                                          RasterFrame& frame, Stats& stats) const {
   const ScanlineCounters counters = sweep(screen, workers, frame, &frame, stats);
   stats.add("transparent_blends", static_cast<double>(counters.blends));
