@@ -4,69 +4,37 @@
 // light plus what is behind it filtered by its transmission times its colour;
 // with an index of refraction of 1, which bends no ray, the same image as
 // Whitted's ray tracer, shadows through the squares included; and the glass
-// sphere of the classic scene looks the same to the three.
+// sphere of the classic scene looks the same to the three. The z-buffer
+// blends both ways: sorted, and by Carpenter's A-buffer (a_buffer_test.cpp).
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "io/scene_file.hpp"
-#include "scene/shapes/convex_polygon.hpp"
 #include "support/raster_testing.hpp"
+#include "support/transparency_testing.hpp"
 
 namespace rise {
 namespace {
 
 using raster_testing::render;
+using namespace transparency_testing;
 
-constexpr std::string_view kBlendingAlgorithms[] = {"depth-sort", "z-buffer", "scanline"};
+// The algorithms that blend, the z-buffer both ways.
+struct Blender {
+  std::string_view algorithm;
+  Transparency transparency;
+  std::string_view label;
+};
+constexpr Blender kBlenders[] = {
+    {"depth-sort", Transparency::Sorted, "depth-sort"},
+    {"z-buffer", Transparency::Sorted, "z-buffer"},
+    {"z-buffer", Transparency::ABuffer, "z-buffer --transparency a-buffer"},
+    {"scanline", Transparency::Sorted, "scanline"},
+};
 
-// A square of side 2 facing the camera (on -z) at depth z, centred at
-// (x, y), of material `material`.
-void addSquare(Scene& scene, float x, float y, float z, int material) {
-  scene.shapes.push_back(std::make_unique<ConvexPolygon>(
-      std::vector<Vec3>{{x - 1, y - 1, z}, {x + 1, y - 1, z}, {x + 1, y + 1, z}, {x - 1, y + 1, z}},
-      material));
-}
-
-Material transparent(const Color& color, float transmission) {
-  Material material;
-  material.color = color;
-  material.ka = 1.0f;
-  material.kd = 0.0f;
-  material.transmission = transmission;
-  material.ior = 1.0f;
-  return material;
-}
-
-// Ambient light alone: each surface's own light is Ia ka C (1 - t).
-Color ownLight(const Scene& scene, const Material& material) {
-  return scene.ambient * material.ka * (1.0f - material.transmission) * material.color;
-}
-
-Color over(const Material& material, const Color& own, const Color& behind) {
-  return own + material.transmission * material.color * behind;
-}
-
-void expectNear(const Color& seen, const Color& expected, std::string_view algorithm) {
-  for (int channel = 0; channel < 3; ++channel)
-    EXPECT_NEAR(seen[channel], expected[channel], 1e-5f) << algorithm << " channel " << channel;
-}
-
-// The pixel whose centre sees the point `at` of a plane facing the camera
-// (z constant), or the nearest to it.
-Vec2 pixelSeeing(const Scene& scene, const RenderSettings& settings, const Vec3& at) {
-  const ViewFrame view(scene.camera, settings.width, settings.height);
-  const Vec3 eye = scene.camera.position;
-  Vec2 best(0.0f);
-  float nearest = kInfinity;
-  for (int py = 0; py < settings.height; ++py)
-    for (int px = 0; px < settings.width; ++px) {
-      const Ray ray = view.primaryRay(px + 0.5f, py + 0.5f);
-      const Vec3 seen = eye + ray.direction * ((at.z - eye.z) / ray.direction.z);
-      const float distance = glm::length(Vec2(seen.x - at.x, seen.y - at.y));
-      if (distance < nearest) nearest = distance, best = Vec2(px, py);
-    }
-  return best;
+RenderResult render(const Blender& blender, const Scene& scene, RenderSettings settings) {
+  settings.transparency = blender.transparency;
+  return render(blender.algorithm, scene, settings);
 }
 
 // Two transparent squares, one in front of the other and offset, over an
@@ -98,12 +66,12 @@ TEST(Transparency, StackedSquaresBlendAsTheFormulaSays) {
       {{0.2f, -0.9f}, over(blue, blueLight, background)},
       {{1.8f, 0.0f}, greyLight},
   };
-  for (std::string_view algorithm : kBlendingAlgorithms) {
-    const RenderResult result = render(algorithm, scene, settings);
+  for (const Blender& blender : kBlenders) {
+    const RenderResult result = render(blender, scene, settings);
     for (const Probe& probe : probes) {
       const Vec2 pixel = pixelSeeing(scene, settings, Vec3(probe.onBluePlane, 0.0f));
       expectNear(result.image.at(static_cast<int>(pixel.x), static_cast<int>(pixel.y)),
-                 probe.expected, algorithm);
+                 probe.expected, blender.label);
     }
   }
 }
@@ -128,8 +96,8 @@ TEST(Transparency, MatchesTheRayTracerWhereNoRayBends) {
   const RenderResult traced = render("ray-tracing", scene, settings);
   settings.shadows = ShadowMethod::Map;
   settings.shadowFilter = 0;
-  for (std::string_view algorithm : kBlendingAlgorithms) {
-    const RenderResult result = render(algorithm, scene, settings);
+  for (const Blender& blender : kBlenders) {
+    const RenderResult result = render(blender, scene, settings);
     int differing = 0;
     for (int y = 0; y < settings.height; ++y)
       for (int x = 0; x < settings.width; ++x) {
@@ -137,7 +105,7 @@ TEST(Transparency, MatchesTheRayTracerWhereNoRayBends) {
         differing += std::max({difference.r, difference.g, difference.b}) > 1e-3f;
       }
     // The shadow's edge on the grey square, a texel or so wide.
-    EXPECT_LE(differing, 60) << algorithm;
+    EXPECT_LE(differing, 60) << blender.label;
   }
 }
 
@@ -163,12 +131,12 @@ TEST(Transparency, BlendsByDepthNotByDrawingOrder) {
       over(blue, ownLight(scene, blue), over(red, ownLight(scene, red), background));
   const Vec2 throughBoth = pixelSeeing(scene, settings, Vec3(0.0f, 0.0f, -1.0f));
   const Vec2 onGrey = pixelSeeing(scene, settings, Vec3(1.0f, 0.0f, -2.0f));
-  for (std::string_view algorithm : kBlendingAlgorithms) {
-    const RenderResult result = render(algorithm, scene, settings);
+  for (const Blender& blender : kBlenders) {
+    const RenderResult result = render(blender, scene, settings);
     expectNear(result.image.at(static_cast<int>(throughBoth.x), static_cast<int>(throughBoth.y)),
-               centre, algorithm);
+               centre, blender.label);
     expectNear(result.image.at(static_cast<int>(onGrey.x), static_cast<int>(onGrey.y)),
-               ownLight(scene, grey), algorithm);
+               ownLight(scene, grey), blender.label);
   }
 }
 
@@ -176,11 +144,9 @@ TEST(Transparency, BlendsByDepthNotByDrawingOrder) {
 // example's: the scanline algorithm blends it as the z-buffer does, within
 // the examples' tolerance (a pixel in a hundred).
 TEST(Transparency, TheGlassSphereLooksTheSameToTheScanlineAsToTheZBuffer) {
-  const Scene scene = loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/classic.yaml");
+  const Scene scene = classicScene();
   for (const auto& [width, height] : {std::pair{150, 61}, std::pair{53, 90}}) {
-    RenderRequest request;
-    request.image = {width, height, 1, SamplePattern::None, FilterKind::Box, {}};
-    const RenderSettings settings = settingsFor(scene, request);
+    const RenderSettings settings = settingsAtSize(scene, width, height);
     const RenderResult scanline = render("scanline", scene, settings);
     EXPECT_GT(scanline.stats.value("transparent_blends"), 0.0);
     EXPECT_LE(

@@ -48,16 +48,12 @@ CLI::Validator finitePositiveNumber() {
       "> 0");
 }
 
-std::map<std::string, ShadowMethod> shadowMethodNames() {
-  std::map<std::string, ShadowMethod> names;
-  for (ShadowMethod method : kAllShadowMethods) names.emplace(shadowMethodName(method), method);
-  return names;
-}
-
-std::map<std::string, Accel> accelNames() {
-  std::map<std::string, Accel> names;
-  for (Accel accel : kAllAccels) names.emplace(accelName(accel), accel);
-  return names;
+// The values of an enumeration by their names on the command line.
+template <typename Enum, std::size_t Count, typename Name>
+CLI::CheckedTransformer choicesNamedBy(const Enum (&all)[Count], Name name) {
+  std::map<std::string, Enum> names;
+  for (Enum value : all) names.emplace(name(value), value);
+  return choices(std::move(names));
 }
 
 void addShadowOptions(CLI::App& command, RenderSettings& settings) {
@@ -65,7 +61,7 @@ void addShadowOptions(CLI::App& command, RenderSettings& settings) {
       .add_option("--shadows", settings.shadows,
                   "Visible-surface algorithms' shadows: none (default), map (shadow maps) or "
                   "volume (shadow volumes, the scanline's)")
-      ->transform(choices(shadowMethodNames()));
+      ->transform(choicesNamedBy(kAllShadowMethods, shadowMethodName));
   command.add_option("--shadow-map-size", settings.shadowMapSize, "Shadow maps: texels a side")
       ->capture_default_str()
       ->check(CLI::Range(16, 8192));
@@ -126,7 +122,7 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
   command
       .add_option("--accel", settings.accel,
                   "Acceleration structure: none, spheres, bvh (default) or embree")
-      ->transform(CLI::CheckedTransformer(accelNames(), CLI::ignore_case));
+      ->transform(choicesNamedBy(kAllAccels, accelName));
   command
       .add_option("--shading", settings.shading,
                   "Visible-surface algorithms: flat, gouraud or phong (default)")
@@ -145,6 +141,11 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
       ->capture_default_str()
       ->check(finitePositiveNumber());
   addShadowOptions(command, settings);
+  command
+      .add_option("--transparency", settings.transparency,
+                  "z-buffer: transparent surfaces sorted back to front (default) or by the "
+                  "a-buffer's fragment lists")
+      ->transform(choicesNamedBy(kAllTransparencies, transparencyName));
 }
 
 CLI::CheckedTransformer encodings() {

@@ -152,6 +152,9 @@ void Studio::drawRenderSettings(const AlgorithmDescription& algorithm) {
       case Option::Shadows:
         drawShadowSettings(settings);
         break;
+      case Option::Transparency:
+        choiceCombo("Transparency", settings.transparency, kAllTransparencies, transparencyName);
+        break;
       case Option::Accel:
         choiceCombo("Acceleration", settings.accel, availableAccels(), accelName);
         break;

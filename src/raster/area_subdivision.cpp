@@ -322,6 +322,7 @@ class Subdivision {
 }  // namespace
 
 void AreaSubdivisionRenderer::resolveVisibility(const ScreenGeometry& screen,
+                                                const RenderSettings& /*settings*/,
                                                 const Workers& workers, RasterFrame& frame,
                                                 Stats& stats) const {
   const Subdivision subdivision(screen, frame);

@@ -353,8 +353,10 @@ void paintBand(const ScreenGeometry& pieces, const PixelRect& band, std::span<co
 
 }  // namespace
 
-void DepthSortRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
-                                          RasterFrame& frame, Stats& stats) const {
+void DepthSortRenderer::resolveVisibility(const ScreenGeometry& screen,
+                                          const RenderSettings& /*settings*/,
+                                          const Workers& workers, RasterFrame& frame,
+                                          Stats& stats) const {
   DepthSorter sorter(screen, frame);
   const std::vector<int> order = sorter.paintingOrder();
   std::vector<std::int64_t> stepOf(sorter.pieces().polygons.size());

@@ -10,8 +10,8 @@ class DepthSortRenderer final : public VisibleSurfaceRenderer {
   const AlgorithmDescription& description() const override;
 
  protected:
-  void resolveVisibility(const ScreenGeometry& screen, const Workers& workers, RasterFrame& frame,
-                         Stats& stats) const override;
+  void resolveVisibility(const ScreenGeometry& screen, const RenderSettings& settings,
+                         const Workers& workers, RasterFrame& frame, Stats& stats) const override;
 };
 
 }  // namespace rise

@@ -60,7 +60,7 @@ const AlgorithmDescription& ScanlineRenderer::description() const {
       "S. Watkins, PhD thesis, University of Utah, 1970; W. J. Bouknight, CACM 13(9), "
       "1970; D. S. Kay and D. Greenberg, Transparency for computer synthesized images, "
       "SIGGRAPH 1979; F. C. Crow, Shadow algorithms for computer graphics, SIGGRAPH 1977",
-      {Effect::Transparency}, {ShadowMethod::Volume});
+      {Effect::Transparency}, {}, {ShadowMethod::Volume});
   return description;
 }
 
@@ -291,7 +291,8 @@ ScanlineCounters sweep(const ScreenGeometry& screen, const Workers& workers, Vis
 
 }  // namespace
 
-void ScanlineRenderer::resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
+void ScanlineRenderer::resolveVisibility(const ScreenGeometry& screen,
+                                         const RenderSettings& /*settings*/, const Workers& workers,
                                          RasterFrame& frame, Stats& stats) const {
   const ScanlineCounters counters = sweep(screen, workers, frame, &frame, stats);
   stats.add("transparent_blends", static_cast<double>(counters.blends));

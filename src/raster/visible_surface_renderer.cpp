@@ -26,21 +26,24 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
 AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
                                              std::string_view citation,
                                              std::vector<Effect> ownEffects,
+                                             std::vector<Option> ownOptions,
                                              std::vector<ShadowMethod> ownShadowMethods) {
   std::vector<Effect> effects = {Effect::Shadows, Effect::DepthOfField, Effect::MotionBlur};
   effects.insert(effects.end(), ownEffects.begin(), ownEffects.end());
+  std::vector<Option> options = {Option::Shading, Option::Culling, Option::Tessellation,
+                                 Option::PlaneSize, Option::Shadows};
+  options.insert(options.end(), ownOptions.begin(), ownOptions.end());
   std::vector<ShadowMethod> shadowMethods = {ShadowMethod::Map};
   shadowMethods.insert(shadowMethods.end(), ownShadowMethods.begin(), ownShadowMethods.end());
-  return {
-      name,
-      summary,
-      citation,
-      Family::VisibleSurface,
-      {"depth", "normal", "cost", "face", "shadow-map"},
-      {Option::Shading, Option::Culling, Option::Tessellation, Option::PlaneSize, Option::Shadows},
-      std::move(effects),
-      {},
-      std::move(shadowMethods)};
+  return {name,
+          summary,
+          citation,
+          Family::VisibleSurface,
+          {"depth", "normal", "cost", "face", "shadow-map"},
+          std::move(options),
+          std::move(effects),
+          {},
+          std::move(shadowMethods)};
 }
 
 TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& settings,
@@ -204,7 +207,7 @@ RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
   addProjectionStats(stats, screen);
   {
     FrameRegions regions(observer, frame);
-    resolveVisibility(screen, Workers(settings.threads, regions), frame, stats);
+    resolveVisibility(screen, settings, Workers(settings.threads, regions), frame, stats);
   }
   stats.add("covered_pixels", static_cast<double>(frame.coveredPixels()));
 

@@ -50,10 +50,12 @@ class VisibleSurfaceRenderer : public Renderer {
 
  protected:
   // Finds the face seen at each pixel and tells the frame, adding the
-  // algorithm's counters to `stats`, among them "pixels_written". The
-  // workers report progress to the render's observer.
-  virtual void resolveVisibility(const ScreenGeometry& screen, const Workers& workers,
-                                 RasterFrame& frame, Stats& stats) const = 0;
+  // algorithm's counters to `stats`, among them "pixels_written"; of the
+  // settings, it reads those its description's options name. The workers
+  // report progress to the render's observer.
+  virtual void resolveVisibility(const ScreenGeometry& screen, const RenderSettings& settings,
+                                 const Workers& workers, RasterFrame& frame,
+                                 Stats& stats) const = 0;
 };
 
 // The passes the settings' samples call for, each dimension stratified and
@@ -79,10 +81,11 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen);
 // The description of a visible-surface algorithm: what the family shares
 // (its buffers, the settings it reads, the effects of the accumulation
 // passes and of shadow maps) with the algorithm's own name, summary,
-// citation, effects and ways of drawing shadows.
+// citation, effects, settings and ways of drawing shadows.
 AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
                                              std::string_view citation,
                                              std::vector<Effect> ownEffects = {},
+                                             std::vector<Option> ownOptions = {},
                                              std::vector<ShadowMethod> ownShadowMethods = {});
 
 // The scene tessellated as the settings ask, planes centred under the camera,

@@ -154,4 +154,14 @@ void checkRenderFits(const Scene& scene, const RenderSettings& settings, Family 
   }
 }
 
+void checkWorkingMemoryFits(std::uint64_t bytes, const std::string& what,
+                            const std::string& instead) {
+  std::string why;
+  const std::uint64_t budget = renderMemoryBudget(&why);
+  if (bytes > budget)
+    throw RenderLimitError(what + " would take about " + gigabytes(static_cast<double>(bytes)) +
+                           ", more than the " + gigabytes(static_cast<double>(budget)) +
+                           " a render may take (" + why + "); expected " + instead);
+}
+
 }  // namespace rise

@@ -58,4 +58,11 @@ std::uint64_t renderMemoryBudget(std::string* why = nullptr);
 // limits allow, or asks for more than kMostThreads threads.
 void checkRenderFits(const Scene& scene, const RenderSettings& settings, Family family);
 
+// Throws RenderLimitError when `bytes`, memory an algorithm works out it needs
+// once it knows the polygons on the screen, before it takes it, are more than
+// a render may take; `what` names that memory ("the A-buffer's fragment
+// lists") and `instead` says what to do ("--transparency sorted").
+void checkWorkingMemoryFits(std::uint64_t bytes, const std::string& what,
+                            const std::string& instead);
+
 }  // namespace rise

@@ -78,5 +78,17 @@ TEST(RenderLimits, RefusesMoreThreadsThanTheLimit) {
             "--threads 257: expected at most 256 threads");
 }
 
+TEST(RenderLimits, RefusesWorkingMemoryBeyondTheBudgetNamingWhatItIs) {
+  EXPECT_NO_THROW(checkWorkingMemoryFits(1000, "the lists", "fewer"));
+  try {
+    checkWorkingMemoryFits(renderMemoryBudget() + 1, "the lists", "fewer of them");
+    ADD_FAILURE() << "no refusal";
+  } catch (const RenderLimitError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.substr(0, 27), "the lists would take about ") << message;
+    EXPECT_NE(message.find("; expected fewer of them"), std::string::npos) << message;
+  }
+}
+
 }  // namespace
 }  // namespace rise

@@ -40,4 +40,14 @@ std::string_view accelName(Accel accel) {
   return "?";
 }
 
+std::string_view transparencyName(Transparency transparency) {
+  switch (transparency) {
+    case Transparency::Sorted:
+      return "sorted";
+    case Transparency::ABuffer:
+      return "a-buffer";
+  }
+  return "?";
+}
+
 }  // namespace rise

@@ -36,6 +36,14 @@ inline constexpr ShadowMethod kAllShadowMethods[] = {ShadowMethod::None, ShadowM
                                                      ShadowMethod::Volume};
 std::string_view shadowMethodName(ShadowMethod method);  // as on the command line: "volume"
 
+// How the z-buffer draws transparent surfaces: sorted back to front after the
+// opaque ones (raster/transparency.hpp), or by Carpenter's A-buffer, a list
+// of fragments at each pixel resolved by depth at the end, in any order
+// (raster/a_buffer.hpp).
+enum class Transparency { Sorted, ABuffer };
+inline constexpr Transparency kAllTransparencies[] = {Transparency::Sorted, Transparency::ABuffer};
+std::string_view transparencyName(Transparency transparency);  // as on the command line: "a-buffer"
+
 // How to render, whatever the algorithm. The image size comes from the scene
 // unless the command line overrides it.
 struct RenderSettings {
@@ -60,6 +68,8 @@ struct RenderSettings {
   int shadowMapSize = 1024;
   float shadowBias = 1.5f;
   int shadowFilter = 1;
+  // How the z-buffer orders its transparent surfaces.
+  Transparency transparency = Transparency::Sorted;
 
   // Only this part of the image, for renders split among processes: the
   // result holds its pixels alone, each the value it has in the whole image

@@ -28,6 +28,8 @@ std::string_view toString(Option option) {
       return "plane-size";
     case Option::Shadows:
       return "shadows";
+    case Option::Transparency:
+      return "transparency";
     case Option::Accel:
       return "accel";
     case Option::MaxDepth:

@@ -53,10 +53,19 @@ class RenderObserver : public Progress {
 enum class Family { VisibleSurface, RayTracing, Hybrid };
 
 // The settings of RenderSettings that only some algorithms read.
-enum class Option { Shading, Culling, Tessellation, PlaneSize, Shadows, Accel, MaxDepth };
+enum class Option {
+  Shading,
+  Culling,
+  Tessellation,
+  PlaneSize,
+  Shadows,
+  Transparency,
+  Accel,
+  MaxDepth
+};
 inline constexpr Option kAllOptions[] = {Option::Shading,   Option::Culling, Option::Tessellation,
-                                         Option::PlaneSize, Option::Shadows, Option::Accel,
-                                         Option::MaxDepth};
+                                         Option::PlaneSize, Option::Shadows, Option::Transparency,
+                                         Option::Accel,     Option::MaxDepth};
 
 // What an algorithm shows of light beyond the Phong model at each surface.
 enum class Effect {
