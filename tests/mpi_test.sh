@@ -31,15 +31,14 @@ for name, value in json.load(open(sys.argv[1])).items():
 # The ray tracer renders a tile's own pixels: with a box filter and tiles of
 # whole ray tracer's tiles, the rays of the tiles add up to those of the image.
 traced=("$examples/soft-shadows.yaml" --width 64 --height 48 --samples 2 --filter box --threads 1
-  --aov depth,normal,cost)
+  --aov "depth,normal,cost")
 "$rise" render "${traced[@]}" -o "$work/traced_alone.exr" --stats "$work/traced_alone.json" \
   2>/dev/null
 "${ranks[@]}" "$rise_mpi" render "${traced[@]}" --tile-size 32 -o "$work/traced_ranks.exr" \
   --stats "$work/traced_ranks.json" 2>/dev/null
-for file in traced_%s.exr traced_%s.depth.exr traced_%s.normal.exr traced_%s.cost.exr; do
-  # shellcheck disable=SC2059
-  cmp "$work/$(printf "$file" alone)" "$work/$(printf "$file" ranks)" ||
-    fail "$(printf "$file" ranks) differs from the one rendered alone"
+for buffer in "" .depth .normal .cost; do
+  cmp "$work/traced_alone$buffer.exr" "$work/traced_ranks$buffer.exr" ||
+    fail "the ray tracer's traced_ranks$buffer.exr differs from the one rendered alone"
 done
 [[ $(counters "$work/traced_ranks.json") == "$(counters "$work/traced_alone.json")" ]] ||
   fail "the ray tracer's counters differ: $(diff <(counters "$work/traced_alone.json") \
@@ -48,7 +47,7 @@ grep -q '"primary_rays": 6144' "$work/traced_ranks.json" ||
   fail "the tiles' primary rays do not add up to 64 x 48 x 2"
 
 # The z-buffer draws the whole frame for each tile: its counters are the frame's.
-drawn=("$examples/classic.yaml" --width 50 --height 38 --threads 1 -a z-buffer --aov depth,face)
+drawn=("$examples/classic.yaml" --width 50 --height 38 --threads 1 -a z-buffer --aov "depth,face")
 "$rise" render "${drawn[@]}" -o "$work/drawn_alone.png" --stats "$work/drawn_alone.json" 2>/dev/null
 "${ranks[@]}" "$rise_mpi" render "${drawn[@]}" --tile-size 13 -o "$work/drawn_ranks.png" \
   --stats "$work/drawn_ranks.json" 2>/dev/null
@@ -108,6 +107,11 @@ output=$("${ranks[@]}" "$rise_mpi" render "$work/broken.yaml" -o "$work/broken.p
 [[ $status == 2 ]] || fail "a broken scene ended with status $status, expected 2: $output"
 [[ $output == *"objects"* ]] || fail "a broken scene's message does not name what is missing: $output"
 [[ ! -e $work/broken.png ]] || fail "a broken scene wrote an image"
+status=0
+"${ranks[@]}" "$rise_mpi" render "${drawn[@]}" --shadows map --aov shadow-map \
+  -o "$work/shadow.png" >/dev/null 2>&1 || status=$?
+[[ $status == 2 && ! -e $work/shadow.png ]] ||
+  fail "a shadow map cut into tiles was not refused (status $status)"
 status=0
 output=$("${ranks[@]}" "$rise_mpi" compare "$work/broken.yaml" -o "$work/broken" 2>&1) ||
   status=$?
