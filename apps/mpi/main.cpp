@@ -64,7 +64,7 @@ int run(int argc, char** argv, int rank, int ranks) {
   if (ranks < 2) {
     if (rank == 0)
       std::cerr << "rise-mpi: rank 0 hands out the work and the others render; expected 2 "
-                   "ranks or more (mpirun -np 3 rise-mpi ...), or rise render\n";
+                   "ranks or more (mpirun -np 3 rise-mpi ...), or rise alone\n";
     return cli::kExitBadInput;
   }
   if (*renderCommand) return rank == 0 ? coordinate(options, ranks) : work(options);
