@@ -17,10 +17,7 @@ void addCompareOptions(CLI::App& command, CompareOptions& options) {
                   "Only these algorithms, separated by commas (default: all)")
       ->delimiter(',')
       ->check(CLI::IsMember(algorithmNames()));
-  command
-      .add_option("--encoding", options.encoding,
-                  "srgb (the display standard) or linear (raw values)")
-      ->transform(encodings());
+  addEncodingOption(command, options.encoding);
 }
 
 std::vector<const Renderer*> comparedRenderers(const CompareOptions& options) {

@@ -57,10 +57,7 @@ bool buffersAreWritten(const RenderOutputOptions& options, const SettingsOptions
 
 void addRenderOutputOptions(CLI::App& command, RenderOutputOptions& options) {
   command.add_option("--stats", options.statsPath, "Also write the time and counters as JSON");
-  command
-      .add_option("--encoding", options.encoding,
-                  "srgb (the display standard) or linear (raw values)")
-      ->transform(encodings());
+  addEncodingOption(command, options.encoding);
   command
       .add_option("--aov", options.buffers,
                   "Auxiliary buffers to write beside the image (`rise algorithms` lists each "
