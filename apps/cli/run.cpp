@@ -13,14 +13,12 @@
 
 #include "algorithms/registry.hpp"
 #include "animation.hpp"
-#include "io/image_io.hpp"
-#include "io/scene_error.hpp"
+#include "compare.hpp"
 #include "job.hpp"
 #include "look_inside.hpp"
 #include "manual_command.hpp"
 #include "progress_bar.hpp"
-#include "render/buffer_images.hpp"
-#include "reports/comparison_report.hpp"
+#include "render_outputs.hpp"
 #include "settings_options.hpp"
 #include "stats_report.hpp"
 #include "studio_command.hpp"
@@ -33,65 +31,19 @@ struct RenderOptions {
   SettingsOptions settings;
   std::filesystem::path output;
   std::string algorithm = "ray-tracing";
-  std::filesystem::path statsPath;
-  Encoding encoding = Encoding::Srgb;
-  std::vector<std::string> buffers;
+  RenderOutputOptions outputs;
   AnimationOptions animation;
 };
-
-struct CompareOptions {
-  SettingsOptions settings;
-  std::filesystem::path directory;
-  std::vector<std::string> algorithms;  // empty: every one
-  Encoding encoding = Encoding::Srgb;
-};
-
-// out.png -> out.depth.png: the auxiliary buffers are written beside the image.
-std::filesystem::path bufferPath(const std::filesystem::path& output, const std::string& name) {
-  std::filesystem::path path = output;
-  return path.replace_extension("." + name + output.extension().string());
-}
-
-// EXR keeps the raw values; the 8-bit formats get a picture of them.
-void writeBuffer(const RenderResult& result, const std::string& name,
-                 const std::filesystem::path& output) {
-  const Image& raw = result.buffers.find(name)->second;
-  const std::filesystem::path path = bufferPath(output, name);
-  if (output.extension() == ".exr")
-    writeImage(raw, path, Encoding::Linear);
-  else
-    writeImage(visualizeBuffer(name, raw), path, Encoding::Linear);
-}
 
 int render(const RenderOptions& options, const CLI::App& command) {
   const Renderer& renderer = *findRenderer(options.algorithm);
   const AlgorithmDescription& algorithm = renderer.description();
   if (!drawsShadowsAsked(algorithm, options.settings.request.settings.shadows))
     return kExitBadInput;
-  for (const std::string& name : options.buffers) {
-    if (!algorithm.writes(name)) {
-      std::cerr << "rise: --aov " << name << ": " << algorithm.name << " has no '" << name
-                << "' buffer; it has: " << joined(algorithm.buffers) << "\n";
-      return kExitBadInput;
-    }
-    if (name == "shadow-map" && options.settings.request.settings.shadows != ShadowMethod::Map) {
-      std::cerr << "rise: --aov shadow-map: there is no shadow map without --shadows map\n";
-      return kExitBadInput;
-    }
-  }
   const std::filesystem::path output =
       options.output.empty() ? defaultOutput(options.settings.scenePath, ".png") : options.output;
-  try {
-    checkImageFormat(output);
-  } catch (const ImageFileError& error) {
-    std::cerr << "rise: -o " << error.what() << "\n";
+  if (!renderOutputsAreValid(options.outputs, options.settings, algorithm, output))
     return kExitBadInput;
-  }
-  std::vector<PlannedOutput> outputs{{output, "-o"}};
-  for (const std::string& name : options.buffers)
-    outputs.push_back({bufferPath(output, name), "--aov " + name});
-  if (!options.statsPath.empty()) outputs.push_back({options.statsPath, "--stats"});
-  if (!outputsAreWritable(outputs, options.settings.scenePath)) return kExitBadInput;
 
   std::variant<Job, int> prepared = prepare(options.settings, {algorithm.family});
   if (const int* status = std::get_if<int>(&prepared)) return *status;
@@ -102,10 +54,8 @@ int render(const RenderOptions& options, const CLI::App& command) {
   const FrameWriter write = [&](const RenderResult& result, const std::filesystem::path& file) {
     const RenderDescription description = describe(job, renderer.name());
     try {
-      writeImage(result.image, file, options.encoding);
-      for (const std::string& name : options.buffers) writeBuffer(result, name, file);
+      writeRenderOutputs(result, file, options.outputs, description);
       if (tile) writeTilePlace(file, job.settings, job.scene.source, renderer.name());
-      if (!options.statsPath.empty()) writeStatsJson(options.statsPath, description, result.stats);
     } catch (const std::exception& error) {
       std::cerr << "rise: " << error.what() << "\n";
       return kExitOutputError;
@@ -127,33 +77,10 @@ int render(const RenderOptions& options, const CLI::App& command) {
 }
 
 int compare(const CompareOptions& options) {
-  std::vector<const Renderer*> renderers;
-  std::vector<std::string_view> names;
-  std::vector<Family> families;
-  for (const Renderer* renderer : allRenderers()) {
-    if (!options.algorithms.empty() &&
-        std::find(options.algorithms.begin(), options.algorithms.end(), renderer->name()) ==
-            options.algorithms.end())
-      continue;
-    if (!drawsShadowsAsked(renderer->description(), options.settings.request.settings.shadows))
-      return kExitBadInput;
-    renderers.push_back(renderer);
-    names.push_back(renderer->name());
-    families.push_back(renderer->description().family);
-  }
-  const std::filesystem::path directory =
-      options.directory.empty() ? defaultOutput(options.settings.scenePath, "") : options.directory;
-  if (std::filesystem::exists(directory) && !std::filesystem::is_directory(directory)) {
-    std::cerr << "rise: -o " << directory.string() << ": is a file; expected a folder to write "
-              << "the comparison into\n";
-    return kExitBadInput;
-  }
-  std::vector<PlannedOutput> outputs;
-  for (const std::filesystem::path& file : comparisonFiles(directory, names))
-    outputs.push_back({file, "-o " + directory.string() + " (" + file.filename().string() + ")"});
-  if (!outputsAreWritable(outputs, options.settings.scenePath, true)) return kExitBadInput;
-
-  std::variant<Job, int> prepared = prepare(options.settings, families);
+  const std::variant<std::filesystem::path, int> directory = comparisonFolder(options);
+  if (const int* status = std::get_if<int>(&directory)) return *status;
+  const std::vector<const Renderer*> renderers = comparedRenderers(options);
+  std::variant<Job, int> prepared = prepare(options.settings, familiesOf(renderers));
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   const Job& job = std::get<Job>(prepared);
 
@@ -165,15 +92,8 @@ int compare(const CompareOptions& options) {
     std::cerr << renderer->name() << ": " << renders.back().result.stats.value("render_seconds")
               << " s\n";
   }
-  addSameImageCounters(renders, options.encoding);
-  try {
-    writeComparison(directory, job.scene.source, renders, options.encoding);
-  } catch (const std::exception& error) {
-    std::cerr << "rise: " << error.what() << "\n";
-    return kExitOutputError;
-  }
-  std::cerr << "wrote " << (directory / "index.html").string() << "\n";
-  return 0;
+  return writeComparisonFolder(std::get<std::filesystem::path>(directory), job.scene.source,
+                               renders, options.encoding);
 }
 
 // Loads the scene and checks that its own image can be rendered by every
@@ -204,15 +124,6 @@ void listAlgorithms() {
   }
 }
 
-// Every buffer some algorithm writes, in the order they are first met.
-std::vector<std::string> bufferNames() {
-  std::vector<std::string> names;
-  for (const Renderer* renderer : allRenderers())
-    for (std::string_view buffer : renderer->description().buffers)
-      if (std::find(names.begin(), names.end(), buffer) == names.end()) names.emplace_back(buffer);
-  return names;
-}
-
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
   CLI::App* command = app.add_subcommand("render", "Render a scene file to an image");
   addSettingsOptions(*command, options.settings);
@@ -224,18 +135,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
       "a pattern with the frame number: run_%04d.png");
   command->add_option("-a,--algorithm", options.algorithm, "Algorithm (see `rise algorithms`)")
       ->check(CLI::IsMember(algorithmNames()));
-  command->add_option("--stats", options.statsPath, "Also write the time and counters as JSON");
-  command
-      ->add_option("--encoding", options.encoding,
-                   "srgb (the display standard) or linear (raw values)")
-      ->transform(encodings());
-  command
-      ->add_option("--aov", options.buffers,
-                   "Auxiliary buffers to write beside the image (`rise algorithms` lists each "
-                   "algorithm's): " +
-                       joined(bufferNames()))
-      ->delimiter(',')
-      ->check(CLI::IsMember(bufferNames()));
+  addRenderOutputOptions(*command, options.outputs);
   return command;
 }
 
@@ -244,18 +144,7 @@ CLI::App* addCompareCommand(CLI::App& app, CompareOptions& options) {
       "compare",
       "Render a scene with every algorithm: images, a table of times and counters "
       "(Markdown, CSV) and an HTML page");
-  addSettingsOptions(*command, options.settings);
-  command->add_option("-o,--output", options.directory,
-                      "Folder to write into (default: the scene's name)");
-  command
-      ->add_option("--algorithms", options.algorithms,
-                   "Only these algorithms, separated by commas (default: all)")
-      ->delimiter(',')
-      ->check(CLI::IsMember(algorithmNames()));
-  command
-      ->add_option("--encoding", options.encoding,
-                   "srgb (the display standard) or linear (raw values)")
-      ->transform(encodings());
+  addCompareOptions(*command, options);
   return command;
 }
 

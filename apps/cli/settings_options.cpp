@@ -154,6 +154,11 @@ CLI::CheckedTransformer encodings() {
       CLI::ignore_case);
 }
 
+void addEncodingOption(CLI::App& command, Encoding& encoding) {
+  command.add_option("--encoding", encoding, "srgb (the display standard) or linear (raw values)")
+      ->transform(encodings());
+}
+
 Scene loadScene(const std::string& path) {
   if (path != "-") return loadSceneFile(path);
   return loadSceneStream(std::cin, "<stdin>");

@@ -20,6 +20,9 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options);
 // The --encoding option's names: srgb, linear.
 CLI::CheckedTransformer encodings();
 
+// Adds --encoding, how the images written store their values.
+void addEncodingOption(CLI::App& command, Encoding& encoding);
+
 // Reads the scene file, or standard input for "-". Throws SceneError.
 Scene loadScene(const std::string& path);
 

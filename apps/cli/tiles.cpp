@@ -142,9 +142,7 @@ Image joined(const std::vector<Piece>& pieces) {
                        std::to_string(image.height()) + " pixels, but " + piece.place.string() +
                        " places a " + std::to_string(piece.area.width()) + "x" +
                        std::to_string(piece.area.height()) + " region");
-    for (int y = 0; y < image.height(); ++y)
-      for (int x = 0; x < image.width(); ++x)
-        whole.at(piece.area.x0 + x, piece.area.y0 + y) = image.at(x, y);
+    paste(image, piece.area, whole);
   }
   return whole;
 }
@@ -199,6 +197,11 @@ void addTileOption(CLI::App& command, SettingsOptions& options) {
 fs::path defaultTileOutput(const std::string& scenePath, const PixelRect& region) {
   return defaultOutput(scenePath,
                        "." + std::to_string(region.x0) + "_" + std::to_string(region.y0) + ".exr");
+}
+
+void paste(const Image& tile, const PixelRect& place, Image& whole) {
+  for (int y = 0; y < tile.height(); ++y)
+    for (int x = 0; x < tile.width(); ++x) whole.at(place.x0 + x, place.y0 + y) = tile.at(x, y);
 }
 
 fs::path tilePlacePath(const fs::path& image) {

@@ -26,6 +26,9 @@ std::filesystem::path defaultTileOutput(const std::string& scenePath, const Pixe
 void writeTilePlace(const std::filesystem::path& image, const RenderSettings& settings,
                     const std::string& scene, std::string_view algorithm);
 
+// Copies a tile's pixels into the whole image, at the tile's place.
+void paste(const Image& tile, const PixelRect& place, Image& whole);
+
 // The file that says where `image` lies.
 std::filesystem::path tilePlacePath(const std::filesystem::path& image);
 

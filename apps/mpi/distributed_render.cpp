@@ -1,24 +1,22 @@
 #include "distributed_render.hpp"
 
-#include <mpi.h>
-
-#include <array>
+#include <algorithm>
 #include <chrono>
 #include <iostream>
+#include <optional>
 #include <vector>
 
 #include "algorithms/registry.hpp"
 #include "job.hpp"
 #include "render/film.hpp"
+#include "tile_stats.hpp"
+#include "tiles.hpp"
+#include "work_queue.hpp"
 
 namespace rise::mpi {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The messages: a rank says it is ready, sends a result or says it failed;
-// rank 0 answers with work or with the word to stop.
-enum Tag : int { kReady = 1, kResult, kFailed, kWork, kStop };
 
 // One piece of work: a region of one frame (-1: the still image).
 struct WorkItem {
@@ -26,25 +24,20 @@ struct WorkItem {
   PixelRect area;
 };
 
-std::array<int, 5> encode(const WorkItem& item) {
-  return {item.frame, item.area.x0, item.area.y0, item.area.x1, item.area.y1};
-}
-
-WorkItem decode(const std::array<int, 5>& values) {
-  return {values[0], {values[1], values[2], values[3], values[4]}};
-}
-
-void sendStatus(Tag tag, int status) { MPI_Send(&status, 1, MPI_INT, 0, tag, MPI_COMM_WORLD); }
-
 RenderResult renderItem(const Renderer& renderer, cli::Job& job, const Camera& camera,
-                        const WorkItem& item) {
+                        const WorkItem& item, const std::vector<std::string>& buffers) {
   if (item.frame >= 0)
     job.scene.camera = cameraForFrame(camera, item.frame, job.scene.animationFrames);
   RenderSettings settings = job.settings;
   if (item.area.width() != settings.width || item.area.height() != settings.height)
     settings.region = item.area;
   RenderObserver unwatched;  // the ranks draw no progress bars
-  return renderer.render(job.scene, settings, unwatched);
+  RenderResult result = renderTimed(renderer, job.scene, settings, unwatched);
+  // Only the buffers asked for travel to rank 0.
+  std::erase_if(result.buffers, [&](const auto& buffer) {
+    return std::find(buffers.begin(), buffers.end(), buffer.first) == buffers.end();
+  });
+  return result;
 }
 
 // What rank 0 hands out: the frames the options choose, or the image's tiles.
@@ -63,165 +56,148 @@ std::variant<std::vector<WorkItem>, std::string> workItems(const DistributedRend
   return items;
 }
 
-// Rank 0's queue: who holds which item, the image being gathered, and the
-// first failure.
-class Coordinator {
+fs::path outputOf(const DistributedRenderOptions& options) {
+  if (!options.output.empty()) return options.output;
+  return options.animation.requested() ? cli::defaultFramePattern(options.settings.scenePath)
+                                       : cli::defaultOutput(options.settings.scenePath, ".png");
+}
+
+// Rank 0's checks before it hands out work: the files it will write, the
+// scene, the frames. Returns the status of the message printed about the
+// first that fails.
+int prepareRun(const DistributedRenderOptions& options, const Renderer& renderer,
+               std::optional<cli::Job>& job, std::vector<WorkItem>& items) {
+  if (!cli::drawsShadowsAsked(renderer.description(), options.settings.request.settings.shadows))
+    return cli::kExitBadInput;
+  const fs::path output = options.output.empty()
+                              ? cli::defaultOutput(options.settings.scenePath, ".png")
+                              : options.output;
+  if (!cli::renderOutputsAreValid(options.outputs, options.settings, renderer.description(),
+                                  output))
+    return cli::kExitBadInput;
+  const std::vector<std::string>& buffers = options.outputs.buffers;
+  if (!options.animation.requested() &&
+      std::find(buffers.begin(), buffers.end(), "shadow-map") != buffers.end()) {
+    std::cerr << "rise-mpi: --aov shadow-map: the shadow map is the light's picture, not cut "
+                 "into the image's tiles; write it with rise render, or with --frames\n";
+    return cli::kExitBadInput;
+  }
+  std::variant<cli::Job, int> prepared =
+      cli::prepare(options.settings, {renderer.description().family});
+  if (const int* failed = std::get_if<int>(&prepared)) return *failed;
+  const auto chosen = workItems(options, std::get<cli::Job>(prepared));
+  std::optional<std::string> problem;
+  if (const std::string* message = std::get_if<std::string>(&chosen))
+    problem = *message;
+  else if (options.animation.requested() && !options.output.empty())
+    problem = cli::animationOutputProblem(options.output, options.animation.video);
+  if (problem) {
+    std::cerr << "rise-mpi: " << *problem << "\n";
+    return cli::kExitBadInput;
+  }
+  job = std::get<cli::Job>(std::move(prepared));
+  items = std::get<std::vector<WorkItem>>(chosen);
+  return 0;
+}
+
+// What rank 0 makes of the results: each frame written as it comes in, or
+// the tiles put together into the image, its buffers and its statistics.
+class Gatherer {
  public:
-  Coordinator(const DistributedRenderOptions& options, std::vector<WorkItem> items,
-              const RenderSettings& settings)
+  Gatherer(const DistributedRenderOptions& options, const Renderer& renderer, const cli::Job& job,
+           std::vector<WorkItem> items)
       : options_(options),
+        renderer_(renderer),
+        job_(job),
         items_(std::move(items)),
-        whole_(settings.width, settings.height),
-        pattern_(options.output.empty() ? cli::defaultFramePattern(options.settings.scenePath)
-                                        : options.output) {}
-
-  // Answers every rank until each has stopped or failed.
-  void run(int ranks) {
-    std::vector<int> held(static_cast<std::size_t>(ranks), -1);
-    for (int active = ranks - 1; active > 0;) {
-      MPI_Status status;
-      MPI_Probe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
-      const int rank = status.MPI_SOURCE;
-      int& item = held[static_cast<std::size_t>(rank)];
-      if (status.MPI_TAG == kResult) {
-        receiveResult(rank, items_[static_cast<std::size_t>(item)]);
-      } else {
-        int rankStatus = 0;
-        MPI_Recv(&rankStatus, 1, MPI_INT, rank, status.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-        if (status.MPI_TAG == kFailed) {
-          fail(rankStatus, "rank " + std::to_string(rank) + " failed");
-          --active;
-          continue;
-        }
-      }
-      if (failure_ != 0 || next_ == items_.size()) {
-        MPI_Send(nullptr, 0, MPI_INT, rank, kStop, MPI_COMM_WORLD);
-        --active;
-        continue;
-      }
-      item = static_cast<int>(next_++);
-      const std::array<int, 5> work = encode(items_[static_cast<std::size_t>(item)]);
-      MPI_Send(work.data(), 5, MPI_INT, rank, kWork, MPI_COMM_WORLD);
-    }
+        tileStats_(items_.size()) {
+    whole_.image = Image(job.settings.width, job.settings.height);
+    for (const std::string& name : options.outputs.buffers) whole_.buffers[name] = whole_.image;
   }
 
-  void fail(int status, const std::string& why) {
-    if (failure_ != 0) return;
-    failure_ = status;
-    std::cerr << "rise-mpi: " << why << "; the run stops\n";
+  const std::vector<WorkItem>& items() const { return items_; }
+
+  int take(int item, RenderResult result) {
+    const WorkItem& piece = items_[static_cast<std::size_t>(item)];
+    if (piece.frame >= 0) return write(result, cli::framePath(outputOf(options_), piece.frame));
+    cli::paste(result.image, piece.area, whole_.image);
+    for (auto& [name, buffer] : whole_.buffers)
+      cli::paste(result.buffers.at(name), piece.area, buffer);
+    tileStats_[static_cast<std::size_t>(item)] = std::move(result.stats);
+    return 0;
   }
 
-  // Writes the still image once every tile is in; returns the exit status.
-  int finish() {
-    if (failure_ != 0 || options_.animation.requested()) return failure_;
-    return write(whole_, options_.output.empty()
-                             ? cli::defaultOutput(options_.settings.scenePath, ".png")
-                             : options_.output);
+  // Writes the still image, once every tile is in.
+  int finish(double seconds) {
+    whole_.stats = combinedTileStats(renderer_.description().family, tileStats_, seconds);
+    return write(whole_, outputOf(options_));
   }
 
  private:
-  void receiveResult(int rank, const WorkItem& item) {
-    Image piece(item.area.width(), item.area.height());
-    MPI_Recv(&piece.at(0, 0), 3 * item.area.width() * item.area.height(), MPI_FLOAT, rank, kResult,
-             MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (item.frame >= 0) {
-      if (failure_ == 0) failure_ = write(piece, cli::framePath(pattern_, item.frame));
-      return;
-    }
-    for (int y = 0; y < piece.height(); ++y)
-      for (int x = 0; x < piece.width(); ++x)
-        whole_.at(item.area.x0 + x, item.area.y0 + y) = piece.at(x, y);
-  }
-
-  int write(const Image& image, const fs::path& path) {
+  int write(const RenderResult& result, const fs::path& path) {
+    const cli::RenderDescription description = cli::describe(job_, renderer_.name());
     try {
-      writeImage(image, path, options_.encoding);
+      cli::writeRenderOutputs(result, path, options_.outputs, description);
     } catch (const std::exception& error) {
       std::cerr << "rise-mpi: " << error.what() << "\n";
       return cli::kExitOutputError;
     }
+    cli::printStats(std::cerr, description, result.stats);
     std::cerr << "wrote " << path.string() << "\n";
     return 0;
   }
 
   const DistributedRenderOptions& options_;
+  const Renderer& renderer_;
+  const cli::Job& job_;
   std::vector<WorkItem> items_;
-  std::size_t next_ = 0;
-  Image whole_;
-  fs::path pattern_;
-  int failure_ = 0;
+  std::vector<Stats> tileStats_;
+  RenderResult whole_;
 };
 
 }  // namespace
 
 int coordinate(const DistributedRenderOptions& options, int ranks) {
   const auto start = std::chrono::steady_clock::now();
-  std::variant<cli::Job, int> prepared =
-      cli::prepare(options.settings, {findRenderer(options.algorithm)->description().family});
+  const Renderer& renderer = *findRenderer(options.algorithm);
+  std::optional<cli::Job> job;
   std::vector<WorkItem> items;
-  int status = 0;
-  if (const int* failed = std::get_if<int>(&prepared)) {
-    status = *failed;
-  } else {
-    const auto chosen = workItems(options, std::get<cli::Job>(prepared));
-    if (const std::string* problem = std::get_if<std::string>(&chosen)) {
-      std::cerr << "rise-mpi: " << *problem << "\n";
-      status = cli::kExitBadInput;
-    } else {
-      items = std::get<std::vector<WorkItem>>(chosen);
-    }
-  }
-  if (options.animation.requested() && !options.output.empty() && status == 0) {
-    if (const std::optional<std::string> problem =
-            cli::animationOutputProblem(options.output, options.animation.video)) {
-      std::cerr << "rise-mpi: " << *problem << "\n";
-      status = cli::kExitBadInput;
-    }
-  }
-  const RenderSettings settings =
-      status == 0 ? std::get<cli::Job>(prepared).settings : RenderSettings{};
-  Coordinator coordinator(options, std::move(items), settings);
-  if (status != 0) coordinator.fail(status, "rank 0 cannot render the scene");
-  coordinator.run(ranks);
-  if (const int finished = coordinator.finish(); finished != 0) return finished;
+  const int prepared = prepareRun(options, renderer, job, items);
+  std::optional<Gatherer> gatherer;
+  if (prepared == 0) gatherer.emplace(options, renderer, *job, std::move(items));
+  const int count = gatherer ? static_cast<int>(gatherer->items().size()) : 0;
+  const int status = handOut(ranks, count, prepared, [&](int item, RenderResult result) {
+    return gatherer->take(item, std::move(result));
+  });
+  if (status != 0) return status;
   const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
   std::cerr << "rise-mpi: " << ranks - 1 << " ranks rendering, " << seconds.count() << " s\n";
-  if (options.animation.requested() && !options.animation.video.empty()) {
-    const auto frames = cli::framesToRender(options.animation, std::get<cli::Job>(prepared).scene);
-    return cli::writeVideo(options.output.empty()
-                               ? cli::defaultFramePattern(options.settings.scenePath)
-                               : options.output,
-                           std::get<std::vector<int>>(frames), options.animation.video);
-  }
-  return 0;
+  if (!options.animation.requested()) return gatherer->finish(seconds.count());
+  if (options.animation.video.empty()) return 0;
+  std::vector<int> frames;
+  for (const WorkItem& item : gatherer->items()) frames.push_back(item.frame);
+  return cli::writeVideo(outputOf(options), frames, options.animation.video);
 }
 
 int work(const DistributedRenderOptions& options) {
-  std::variant<cli::Job, int> prepared =
-      cli::prepare(options.settings, {findRenderer(options.algorithm)->description().family});
-  if (const int* failed = std::get_if<int>(&prepared)) {
-    sendStatus(kFailed, *failed);
-    return *failed;
-  }
-  cli::Job& job = std::get<cli::Job>(prepared);
   const Renderer& renderer = *findRenderer(options.algorithm);
-  const Camera camera = job.scene.camera;
-  sendStatus(kReady, 0);
-  for (;;) {
-    MPI_Status status;
-    std::array<int, 5> values{};
-    MPI_Recv(values.data(), 5, MPI_INT, 0, MPI_ANY_TAG, MPI_COMM_WORLD, &status);
-    if (status.MPI_TAG == kStop) return 0;
-    try {
-      const RenderResult result = renderItem(renderer, job, camera, decode(values));
-      MPI_Send(result.image.pixels().data(), 3 * result.image.width() * result.image.height(),
-               MPI_FLOAT, 0, kResult, MPI_COMM_WORLD);
-    } catch (const std::exception& error) {
-      std::cerr << "rise-mpi: " << error.what() << "\n";
-      sendStatus(kFailed, cli::kExitOutputError);
-      return cli::kExitOutputError;
-    }
+  std::variant<cli::Job, int> prepared =
+      cli::prepare(options.settings, {renderer.description().family});
+  cli::Job* job = std::get_if<cli::Job>(&prepared);
+  int status = job ? 0 : std::get<int>(prepared);
+  std::vector<WorkItem> items;
+  if (job) {
+    auto chosen = workItems(options, *job);
+    if (auto* chosenItems = std::get_if<std::vector<WorkItem>>(&chosen))
+      items = std::move(*chosenItems);
+    else
+      status = cli::kExitBadInput;  // rank 0 says why
   }
+  const Camera camera = job ? job->scene.camera : Camera{};
+  return serve(status, [&](int item) {
+    return renderItem(renderer, *job, camera, items[static_cast<std::size_t>(item)],
+                      options.outputs.buffers);
+  });
 }
 
 }  // namespace rise::mpi

@@ -1,16 +1,17 @@
 // A render shared among MPI ranks: rank 0 cuts the image into tiles (or a
-// sequence into frames) and hands them out from a queue, one to each rank
-// that asks, so that a slow rank takes fewer; the others render what they are
-// given and send back the pixels; rank 0 writes the files, each whole. Every
-// rank loads the scene itself. A rank that fails says why and stops the
-// handing out: the run fails with its status and no file is written.
+// sequence into frames) and hands them out from a queue (work_queue.hpp);
+// the others render what they are given and send back the pixels, the
+// buffers asked for and the statistics; rank 0 writes the files, each whole,
+// as `rise render` does. Every rank loads the scene itself. A rank that fails
+// says why and stops the handing out: the run fails with its status and no
+// file is written.
 #pragma once
 
 #include <filesystem>
 #include <string>
 
 #include "animation.hpp"
-#include "io/image_io.hpp"
+#include "render_outputs.hpp"
 #include "settings_options.hpp"
 
 namespace rise::mpi {
@@ -19,7 +20,7 @@ struct DistributedRenderOptions {
   cli::SettingsOptions settings;
   std::filesystem::path output;
   std::string algorithm = "ray-tracing";
-  Encoding encoding = Encoding::Srgb;
+  cli::RenderOutputOptions outputs;
   cli::AnimationOptions animation;
   int tileSize = 64;
 };
