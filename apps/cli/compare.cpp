@@ -9,7 +9,14 @@
 namespace rise::cli {
 
 void addCompareOptions(CLI::App& command, CompareOptions& options) {
+  // A comparison sets each family at its best: the visible-surface
+  // algorithms draw shadows, by the method all of them have.
+  options.settings.request.settings.shadows = ShadowMethod::Map;
   addSettingsOptions(command, options.settings);
+  command.get_option("--shadows")
+      ->description(
+          "Visible-surface algorithms' shadows: map (shadow maps, the default here), none, or "
+          "volume (shadow volumes, the scanline's alone: name it with --algorithms)");
   command.add_option("-o,--output", options.directory,
                      "Folder to write into (default: the scene's name)");
   command

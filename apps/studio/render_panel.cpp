@@ -4,7 +4,9 @@
 // time and a cancel button, the buffers, and the values under the pointer.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "algorithms/registry.hpp"
 #include "ray/accelerator.hpp"
@@ -46,12 +48,16 @@ bool choiceCombo(const char* label, Choice& value, const Choices& choices, const
 const auto kPatternName = [](SamplePattern pattern) { return toString(pattern); };
 const auto kFilterName = [](FilterKind filter) { return toString(filter); };
 
-// Shadow maps, with the command line's ranges for their map, bias and filter.
-void drawShadowSettings(RenderSettings& settings) {
-  bool maps = settings.shadows == ShadowMethod::Map;
-  if (ImGui::Checkbox("Shadow maps", &maps))
-    settings.shadows = maps ? ShadowMethod::Map : ShadowMethod::None;
-  if (!maps) return;
+// The shadows the algorithm draws (none, or one of its methods), and for
+// shadow maps the command line's ranges for their map, bias and filter. A
+// method the algorithm lacks, left from another algorithm, becomes none.
+void drawShadowSettings(RenderSettings& settings, const AlgorithmDescription& algorithm) {
+  std::vector<ShadowMethod> methods{ShadowMethod::None};
+  methods.insert(methods.end(), algorithm.shadowMethods.begin(), algorithm.shadowMethods.end());
+  if (std::find(methods.begin(), methods.end(), settings.shadows) == methods.end())
+    settings.shadows = ShadowMethod::None;
+  choiceCombo("Shadows", settings.shadows, methods, shadowMethodName);
+  if (settings.shadows != ShadowMethod::Map) return;
   ImGui::SliderInt("Shadow map size", &settings.shadowMapSize, 16, 8192);
   ImGui::SliderFloat("Shadow bias (texels)", &settings.shadowBias, 0.0f, 1000.0f, "%g",
                      ImGuiSliderFlags_Logarithmic);
@@ -150,7 +156,7 @@ void Studio::drawRenderSettings(const AlgorithmDescription& algorithm) {
         ImGui::DragFloat("Plane size", &settings.planeSize, 100.0f, 1.0f, 1e7f, "%g");
         break;
       case Option::Shadows:
-        drawShadowSettings(settings);
+        drawShadowSettings(settings, algorithm);
         break;
       case Option::Transparency:
         choiceCombo("Transparency", settings.transparency, kAllTransparencies, transparencyName);
