@@ -78,5 +78,30 @@ TEST(RegionSettings, ARegionOutsideTheImageIsRefusedWithItsSize) {
   }
 }
 
+// The shadow map is the light's view, not the image's: a region takes it whole.
+TEST(RegionRender, KeepsTheShadowMapWhole) {
+  const Scene scene = loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/classic.yaml");
+  RenderRequest request;
+  request.image.width = 41;
+  request.image.height = 23;
+  request.settings.shadows = ShadowMethod::Map;
+  request.settings.shadowMapSize = 64;
+  const RenderSettings whole = settingsFor(scene, request);
+  RenderSettings part = whole;
+  part.region = PixelRect{5, 3, 30, 20};
+  RenderObserver observer;
+  const Renderer& zBuffer = *findRenderer("z-buffer");
+  const RenderResult expected = zBuffer.render(scene, whole, observer);
+  const RenderResult result = zBuffer.render(scene, part, observer);
+  const Image& map = result.buffers.at("shadow-map");
+  const Image& wholeMap = expected.buffers.at("shadow-map");
+  ASSERT_EQ(map.width(), wholeMap.width());
+  ASSERT_EQ(map.height(), wholeMap.height());
+  EXPECT_GT(map.width(), part.region->width());
+  for (int y = 0; y < map.height(); ++y)
+    for (int x = 0; x < map.width(); ++x) ASSERT_EQ(map.at(x, y), wholeMap.at(x, y));
+  EXPECT_EQ(result.buffers.at("depth").width(), part.region->width());
+}
+
 }  // namespace
 }  // namespace rise

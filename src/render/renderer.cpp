@@ -75,8 +75,12 @@ bool AlgorithmDescription::draws(ShadowMethod method) const {
 
 void cropToRegion(RenderResult& result, const RenderSettings& settings) {
   if (!settings.region) return;
+  // A buffer of another size is not of the image's pixels (the shadow map,
+  // the light's view) and stays whole.
+  for (auto& [name, buffer] : result.buffers)
+    if (buffer.width() == result.image.width() && buffer.height() == result.image.height())
+      buffer = cropped(buffer, *settings.region);
   result.image = cropped(result.image, *settings.region);
-  for (auto& [name, buffer] : result.buffers) buffer = cropped(buffer, *settings.region);
 }
 
 }  // namespace rise

@@ -28,8 +28,8 @@ struct RenderResult {
   Stats stats;
 };
 
-// Cuts the image and the auxiliary buffers of a whole-image result to
-// `settings`'s region, for the algorithms that render more than it.
+// Cuts the image and the auxiliary buffers of its size of a whole-image
+// result to `settings`'s region, for the algorithms that render more than it.
 void cropToRegion(RenderResult& result, const RenderSettings& settings);
 
 // Watches a render from outside: progress for a bar; cancellation, and the
