@@ -89,6 +89,14 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// An image of the size, and the hybrid's buffers, all of zeros.
+RenderResult blankResult(int width, int height) {
+  RenderResult result{Image(width, height), {}, {}};
+  for (const char* name : {"depth", "normal", "cost", "face"})
+    result.buffers.emplace(name, Image(width, height));
+  return result;
+}
+
 // Where one accumulation pass reports: its steps (the first pass's only) and
 // the ray trees of the chosen pixel, as sample `index` of the pixel.
 struct PassRecording {
@@ -130,7 +138,13 @@ class HybridPass {
         [&](int x, int y, HybridCounters& band) { shade(x, y, images, band); },
         [&](const PixelRect& band, int task, const HybridCounters& bandCounters) {
           if (recording_.steps)
-            recording_.steps->record(raysStep(band, bandCounters), settings_.height + task);
+            recording_.steps->record(
+                raysStep(band, bandCounters,
+                         [&](int x, int y) {
+                           const Pixel& pixel = at(x, y);
+                           return RayPassPixel{pixel.verdict, pixel.mirrorOrGlass};
+                         }),
+                settings_.height + task);
           observer_.onPixelsDone(band, images.image);
         });
     counters.raySeconds += secondsSince(start);
@@ -138,7 +152,8 @@ class HybridPass {
     std::uint64_t covered = 0;
     for (const Pixel& pixel : pixels_) covered += pixel.item.shape >= 0 ? 1 : 0;
     stats.add("covered_pixels", static_cast<double>(covered));
-    return images.result(std::move(stats));
+    images.result.stats = std::move(stats);
+    return std::move(images.result);
   }
 
  private:
@@ -279,23 +294,14 @@ class HybridPass {
 
   // The pass's image and buffers, filled pixel by pixel.
   struct Images {
-    Images(int width, int height)
-        : image(width, height),
-          depth(width, height),
-          normal(width, height),
-          cost(width, height),
-          face(width, height) {}
+    Images(int width, int height) : result{blankResult(width, height)} {}
 
-    RenderResult result(Stats stats) {
-      RenderResult result{std::move(image), {}, std::move(stats)};
-      result.buffers.emplace("depth", std::move(depth));
-      result.buffers.emplace("normal", std::move(normal));
-      result.buffers.emplace("cost", std::move(cost));
-      result.buffers.emplace("face", std::move(face));
-      return result;
-    }
-
-    Image image, depth, normal, cost, face;
+    RenderResult result;
+    Image& image = result.image;
+    Image& depth = result.buffers.at("depth");
+    Image& normal = result.buffers.at("normal");
+    Image& cost = result.buffers.at("cost");
+    Image& face = result.buffers.at("face");
   };
 
   // Whitted's Shade from the item's hit, or his whole primary ray where the
@@ -335,37 +341,6 @@ class HybridPass {
     images.normal.at(x, y) = sample.normal;
     images.cost.at(x, y) = Color(static_cast<float>(pixel.tests));
     images.face.at(x, y) = Color(static_cast<float>(items_->sceneFaceAt(x, y)));
-  }
-
-  // A band of pass 2 as a step: its pixels settled, those that fell back to a
-  // full primary ray and those that spawned mirror or glass rays marked.
-  Step raysStep(const PixelRect& band, const HybridCounters& counters) {
-    const auto count = [&](Count kind) { return static_cast<double>(counters.counts[kind]); };
-    Step step("rays", "rows " + std::to_string(band.y0) + " to " + std::to_string(band.y1 - 1) +
-                          " shaded by rays: " + std::to_string(counters.traced.rays()) + " rays, " +
-                          std::to_string(counters.traced.intersections.tests) +
-                          " intersection tests");
-    step.values = {
-        {"primary_rays_from_item_buffer", count(kFromItemBuffer)},
-        {"fallback_pixels", count(kOutside) + count(kInside)},
-        {"pixels_spawning_rays", count(kSpawning)},
-        {"pixels_spawning_reflection_or_refraction", count(kMirrorOrGlass)},
-        {"intersection_tests", static_cast<double>(counters.traced.intersections.tests)}};
-    StepTable fallbacks{"pixels that fell back", {"x", "y", "side of the outline"}, {}};
-    for (int y = band.y0; y < band.y1; ++y) {
-      for (int x = band.x0; x < band.x1; ++x) {
-        const Pixel& pixel = at(x, y);
-        const Vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-        if (pixel.mirrorOrGlass) step.shapes.push_back({StepShape::Kind::Point, "rays", {centre}});
-        if (pixel.verdict == Verdict::FromItemBuffer) continue;
-        step.shapes.push_back({StepShape::Kind::Point, "fallback", {centre}});
-        fallbacks.rows.push_back({static_cast<double>(x), static_cast<double>(y),
-                                  pixel.verdict == Verdict::Outside ? "outside" : "inside"});
-      }
-    }
-    step.tables.push_back(std::move(fallbacks));
-    step.settled.push_back(band);
-    return step;
   }
 
   const TracingContext& context_;

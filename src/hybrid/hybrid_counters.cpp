@@ -1,5 +1,7 @@
 #include "hybrid/hybrid_counters.hpp"
 
+#include <string>
+
 namespace rise {
 namespace {
 
@@ -20,6 +22,35 @@ void addHybridStats(Stats& stats, const HybridCounters& counters) {
   }
   stats.add("item_buffer_seconds", counters.itemBufferSeconds);
   stats.add("ray_pass_seconds", counters.raySeconds);
+}
+
+Step raysStep(const PixelRect& band, const HybridCounters& counters,
+              const std::function<RayPassPixel(int, int)>& pixelAt) {
+  const auto count = [&](Count kind) { return static_cast<double>(counters.counts[kind]); };
+  Step step("rays", "rows " + std::to_string(band.y0) + " to " + std::to_string(band.y1 - 1) +
+                        " shaded by rays: " + std::to_string(counters.traced.rays()) + " rays, " +
+                        std::to_string(counters.traced.intersections.tests) +
+                        " intersection tests");
+  step.values = {{"primary_rays_from_item_buffer", count(kFromItemBuffer)},
+                 {"fallback_pixels", count(kOutside) + count(kInside)},
+                 {"pixels_spawning_rays", count(kSpawning)},
+                 {"pixels_spawning_reflection_or_refraction", count(kMirrorOrGlass)},
+                 {"intersection_tests", static_cast<double>(counters.traced.intersections.tests)}};
+  StepTable fallbacks{"pixels that fell back", {"x", "y", "side of the outline"}, {}};
+  for (int y = band.y0; y < band.y1; ++y) {
+    for (int x = band.x0; x < band.x1; ++x) {
+      const RayPassPixel pixel = pixelAt(x, y);
+      const Vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+      if (pixel.mirrorOrGlass) step.shapes.push_back({StepShape::Kind::Point, "rays", {centre}});
+      if (pixel.verdict == Verdict::FromItemBuffer) continue;
+      step.shapes.push_back({StepShape::Kind::Point, "fallback", {centre}});
+      fallbacks.rows.push_back({static_cast<double>(x), static_cast<double>(y),
+                                pixel.verdict == Verdict::Outside ? "outside" : "inside"});
+    }
+  }
+  step.tables.push_back(std::move(fallbacks));
+  step.settled.push_back(band);
+  return step;
 }
 
 }  // namespace rise

@@ -1,13 +1,15 @@
-// What the hybrid algorithm (hybrid.cpp) counts, for --stats and rise
-// compare: where each pixel's primary ray came from, which pixels spawned
-// rays, and the time of each pass.
+// What the hybrid algorithm (hybrid.cpp) counts, for --stats, rise compare
+// and its steps: where each pixel's primary ray came from, which pixels
+// spawned rays, and the time of each pass.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <functional>
 
 #include "ray/trace_counters.hpp"
 #include "render/renderer.hpp"
+#include "render/step_recorder.hpp"
 
 namespace rise {
 
@@ -45,5 +47,17 @@ struct HybridCounters {
 
 // Adds the counters to `stats`, the rays' and intersection tests' first.
 void addHybridStats(Stats& stats, const HybridCounters& counters);
+
+// What a step of pass 2 shows of a pixel.
+struct RayPassPixel {
+  Verdict verdict;
+  bool mirrorOrGlass;  // its shading spawned reflected or refracted rays
+};
+
+// A band of pass 2 as a step: its counters, its pixels settled, those that
+// fell back to a full primary ray and those that spawned mirror or glass rays
+// marked, as `pixelAt(x, y)` tells of each.
+Step raysStep(const PixelRect& band, const HybridCounters& counters,
+              const std::function<RayPassPixel(int, int)>& pixelAt);
 
 }  // namespace rise
