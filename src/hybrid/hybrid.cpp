@@ -54,6 +54,7 @@
 #include <deque>
 #include <optional>
 #include <set>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
@@ -89,11 +90,15 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// An image of the size, and the hybrid's buffers, all of zeros.
-RenderResult blankResult(int width, int height) {
+// An image of the size and, all of zeros, the "cost" buffer and, with
+// `whatWasHit`, those of what the primary rays hit: the accumulation keeps
+// those of its first pass alone (visible_surface_renderer.hpp).
+RenderResult blankResult(int width, int height, bool whatWasHit) {
   RenderResult result{Image(width, height), {}, {}};
-  for (const char* name : {"depth", "normal", "cost", "face"})
-    result.buffers.emplace(name, Image(width, height));
+  result.buffers.emplace("cost", Image(width, height));
+  if (whatWasHit)
+    for (const char* name : {"depth", "normal", "face"})
+      result.buffers.emplace(name, Image(width, height));
   return result;
 }
 
@@ -133,7 +138,7 @@ class HybridPass {
     BandWork found = inBands<BandWork>([&](int x, int y, BandWork& band) { findHit(x, y, band); });
     counters += found.counters;
     followOutlines(std::move(found.seeds), counters);
-    Images images(settings_.width, settings_.height);
+    Images images(settings_.width, settings_.height, recording_.index == 0);
     counters += inBands<HybridCounters>(
         [&](int x, int y, HybridCounters& band) { shade(x, y, images, band); },
         [&](const PixelRect& band, int task, const HybridCounters& bandCounters) {
@@ -294,14 +299,20 @@ class HybridPass {
 
   // The pass's image and buffers, filled pixel by pixel.
   struct Images {
-    Images(int width, int height) : result{blankResult(width, height)} {}
+    Images(int width, int height, bool whatWasHit)
+        : result{blankResult(width, height, whatWasHit)} {}
+
+    Image* buffer(std::string_view name) {
+      const auto found = result.buffers.find(name);
+      return found == result.buffers.end() ? nullptr : &found->second;
+    }
 
     RenderResult result;
     Image& image = result.image;
-    Image& depth = result.buffers.at("depth");
-    Image& normal = result.buffers.at("normal");
     Image& cost = result.buffers.at("cost");
-    Image& face = result.buffers.at("face");
+    Image* depth = buffer("depth");  // none but in the first pass
+    Image* normal = buffer("normal");
+    Image* face = buffer("face");
   };
 
   // Whitted's Shade from the item's hit, or his whole primary ray where the
@@ -337,10 +348,11 @@ class HybridPass {
     pixel.tests += static_cast<std::uint32_t>(traced.intersections.tests - tests);
 
     images.image.at(x, y) = sample.color;
-    images.depth.at(x, y) = Color(sample.depth);
-    images.normal.at(x, y) = sample.normal;
     images.cost.at(x, y) = Color(static_cast<float>(pixel.tests));
-    images.face.at(x, y) = Color(static_cast<float>(items_->sceneFaceAt(x, y)));
+    if (!images.depth) return;
+    images.depth->at(x, y) = Color(sample.depth);
+    images.normal->at(x, y) = sample.normal;
+    images.face->at(x, y) = Color(static_cast<float>(items_->sceneFaceAt(x, y)));
   }
 
   const TracingContext& context_;

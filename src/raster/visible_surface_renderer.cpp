@@ -169,8 +169,9 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
     }
     accumulated.stats.accumulate(result.stats);
     Image& cost = accumulated.buffers.at("cost");
+    const Image& passCost = result.buffers.at("cost");
     for (int y = 0; y < settings.height; ++y)
-      for (int x = 0; x < settings.width; ++x) cost.at(x, y) += result.buffers.at("cost").at(x, y);
+      for (int x = 0; x < settings.width; ++x) cost.at(x, y) += passCost.at(x, y);
   }
   film.merge(filmTile);
   accumulated.image = film.resolve();
