@@ -110,12 +110,22 @@ struct PassRecording {
   int index;
 };
 
+// What pass 2 knows of a pixel.
+struct Pixel {
+  Ray ray;  // its primary ray, made once for all that tests and shades it
+  Item item;
+  Hit hit;  // the ray's hit on its item's exact surface
+  Verdict verdict = Verdict::FromItemBuffer;
+  bool mirrorOrGlass = false;  // its shading spawned reflected or refracted rays
+  std::uint32_t tests = 0;     // intersection tests made for it, for the "cost" buffer
+};
+
 // Both passes of one accumulation pass.
 class HybridPass {
  public:
   HybridPass(const TracingContext& context, const TessellatedScene& tessellated,
              const RenderSettings& settings, const AccumulationPass& pass, RenderObserver& observer,
-             const PassRecording& recording)
+             const PassRecording& recording, std::vector<Pixel>& pixels)
       : context_(context),
         tessellated_(tessellated),
         settings_(settings),
@@ -125,7 +135,9 @@ class HybridPass {
         workers_(settings.threads, observer),
         view_(context.scene.camera, settings.width, settings.height),
         projection_(view_, pass.pixelOffset, pass.lens),
-        pixels_(static_cast<std::size_t>(settings.width) * settings.height) {}
+        pixels_(pixels) {
+    pixels_.resize(static_cast<std::size_t>(settings.width) * settings.height);
+  }
 
   RenderResult run(HybridCounters& counters) {
     Stats stats;
@@ -162,14 +174,6 @@ class HybridPass {
   }
 
  private:
-  // What pass 2 knows of a pixel.
-  struct Pixel {
-    Item item;
-    Hit hit;  // the ray's hit on its item's exact surface
-    Verdict verdict = Verdict::FromItemBuffer;
-    bool mirrorOrGlass = false;  // its shading spawned reflected or refracted rays
-    std::uint32_t tests = 0;     // intersection tests made for it, for the "cost" buffer
-  };
   // A pixel that fell back because `item` covers it: its neighbours are
   // tested against that item in turn.
   struct Seed {
@@ -257,10 +261,10 @@ class HybridPass {
   void findHit(int x, int y, BandWork& band) {
     Pixel& pixel = at(x, y);
     const int face = items_->faceAt(x, y);
+    pixel = Pixel{};  // what the last accumulation pass left goes
+    pixel.ray = rayAt(x, y);
     pixel.item = items_->itemOf(face);
-    std::optional<Ray> ray;  // made when first needed: most of the sky's pixels need none
-    const auto rayHere = [&]() -> const Ray& { return ray ? *ray : ray.emplace(rayAt(x, y)); };
-    if (pixel.item.shape >= 0 && !intersect(pixel.item, rayHere(), pixel, pixel.hit, band.counters))
+    if (pixel.item.shape >= 0 && !intersect(pixel.item, pixel.ray, pixel, pixel.hit, band.counters))
       pixel.verdict = Verdict::Outside;
     std::array<Item, 4> tested;
     int count = 0;
@@ -271,7 +275,7 @@ class HybridPass {
       const auto end = tested.begin() + count;
       if (item == pixel.item || std::find(tested.begin(), end, item) != end) return;
       tested[static_cast<std::size_t>(count++)] = item;
-      if (!coversNearer(item, rayHere(), pixel, band.counters)) return;
+      if (!coversNearer(item, pixel.ray, pixel, band.counters)) return;
       fallBack(pixel);
       band.seeds.push_back({x, y, item});
     });
@@ -290,7 +294,7 @@ class HybridPass {
       forEachNeighbour(seed.x, seed.y, [&](int x, int y) {
         Pixel& pixel = at(x, y);
         if (pixel.item == seed.item || !tested.insert({x, y, seed.item}).second) return;
-        if (!coversNearer(seed.item, rayAt(x, y), pixel, counters)) return;
+        if (!coversNearer(seed.item, pixel.ray, pixel, counters)) return;
         fallBack(pixel);
         pending.push_back({x, y, seed.item});
       });
@@ -335,11 +339,11 @@ class HybridPass {
     SampleResult sample;
     if (pixel.verdict != Verdict::FromItemBuffer) {
       ++counters.counts[pixel.verdict == Verdict::Outside ? kOutside : kInside];
-      sample = tracePrimary(context_, rayAt(x, y), whitted, traced, treeHere);
+      sample = tracePrimary(context_, pixel.ray, whitted, traced, treeHere);
     } else {
       ++counters.counts[kFromItemBuffer];
       const Hit* hit = pixel.item.shape >= 0 ? &pixel.hit : nullptr;
-      sample = shadeFirstHit(context_, rayAt(x, y), hit, whitted, traced, treeHere);
+      sample = shadeFirstHit(context_, pixel.ray, hit, whitted, traced, treeHere);
     }
     if (tree) recording_.trees->recordTree(std::move(*tree));
     pixel.mirrorOrGlass = traced.reflectionRays + traced.refractionRays > mirrorOrGlassRays;
@@ -365,7 +369,7 @@ class HybridPass {
   const ViewFrame view_;
   const ViewProjection projection_;
   std::optional<ItemBuffer> items_;
-  std::vector<Pixel> pixels_;
+  std::vector<Pixel>& pixels_;  // the render's, kept from pass to pass
 };
 
 }  // namespace
@@ -376,13 +380,14 @@ RenderResult HybridRenderer::render(const Scene& scene, const RenderSettings& se
   const TracingContext context{scene, intersector, settings.maxDepth};
   HybridCounters counters;
   int passes = 0;
+  std::vector<Pixel> pixels;
   RenderResult result = renderInPasses(
       scene, settings, observer,
       [&](const TessellatedScene& tessellated, const AccumulationPass& pass,
           RenderObserver& passObserver) {
         const PassRecording recording{passObserver.stepRecorder(), observer.stepRecorder(),
                                       passes++};
-        return HybridPass(context, tessellated, settings, pass, passObserver, recording)
+        return HybridPass(context, tessellated, settings, pass, passObserver, recording, pixels)
             .run(counters);
       });
   addHybridStats(result.stats, counters);
