@@ -2,8 +2,8 @@
 # The hybrid scan-line / ray-tracing algorithm beside Whitted's ray tracer
 # with the BVH, on the same scenes, with 1 and with 16 jittered samples a
 # pixel: the report's model scene (examples/md2.yaml), the classic scene, a
-# mesh of 1,000,000 triangles over a mirror floor (bench/raster/make_mesh.py),
-# and the spheres scene of the POV-Ray benchmark. For each, the table shows
+# mesh of 1,000,000 triangles (bench/raster/make_mesh.py) over a mirror floor
+# and over a matte one, and the spheres scene of the POV-Ray benchmark. For each, the table shows
 # both times, their ratio, the share of Whitted's rays that were primary rays
 # (the work the item buffer can take over), the hybrid's fallback pixels and
 # the time of each of its two passes.
@@ -30,7 +30,7 @@ require_count --runs "$runs" 1
 require_count --threads "$threads" 1
 
 make_mesh_once "$out/bumpy-sphere.ply"
-cp bench/hybrid/million-mirror.yaml "$out/"
+cp bench/hybrid/million-mirror.yaml bench/hybrid/million-matte.yaml "$out/"
 
 # Renders one row $runs times ($1: a file name, then rise's options); prints
 # the best render_seconds and leaves the statistics of the best run in
@@ -57,6 +57,7 @@ readonly SCENES=(
   "md2|examples/md2.yaml"
   "classic|examples/classic.yaml"
   "1M triangles, mirror floor|$out/million-mirror.yaml"
+  "1M triangles, matte floor|$out/million-matte.yaml"
   "spheres|examples/spheres.yaml"
 )
 
