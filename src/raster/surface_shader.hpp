@@ -11,10 +11,11 @@
 // the vertices with flat or Gouraud shading, whose shadows are as coarse as
 // their light. Shadow volumes answer for a pixel instead, and a pixel in a
 // shadow takes the model evaluated again where the shading evaluates it,
-// with those answers: its shadow is as sharp whatever the shading. Without it every light reaches
-// every surface facing it. What else the ray tracer adds to the model is left out: no mirror
-// reflection or refraction; a transparent material is drawn opaque, with the model's (1 - t)
-// dimming of its ambient and diffuse light.
+// with those answers: its shadow is as sharp whatever the shading. Without
+// either, every light reaches every surface facing it. What else the ray
+// tracer adds to the model is left out: no mirror reflection or refraction;
+// a transparent material is drawn opaque, with the model's (1 - t) dimming of
+// its ambient and diffuse light.
 #pragma once
 
 #include <array>
