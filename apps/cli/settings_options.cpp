@@ -12,9 +12,23 @@
 namespace rise::cli {
 namespace {
 
+// The value named, in any case; a name not among them is refused with the
+// names there are: "--accel: bhv; expected one of bvh, embree, none, spheres".
 template <typename Enum>
-CLI::CheckedTransformer choices(std::map<std::string, Enum> names) {
-  return CLI::CheckedTransformer(std::move(names), CLI::ignore_case);
+CLI::Validator choices(std::map<std::string, Enum> names) {
+  std::string expected;
+  for (const auto& [name, value] : names) {
+    if (!expected.empty()) expected += ", ";
+    expected += name;
+  }
+  const CLI::CheckedTransformer named(std::move(names), CLI::ignore_case);
+  return CLI::Validator(
+      [named, expected](std::string& text) -> std::string {
+        const std::string given = text;
+        if (named(text).empty()) return {};
+        return given + "; expected one of " + expected;
+      },
+      "{" + expected + "}");
 }
 
 // The value's text and what was expected of it, as CLI11 shows it after the
@@ -50,7 +64,7 @@ CLI::Validator finitePositiveNumber() {
 
 // The values of an enumeration by their names on the command line.
 template <typename Enum, std::size_t Count, typename Name>
-CLI::CheckedTransformer choicesNamedBy(const Enum (&all)[Count], Name name) {
+CLI::Validator choicesNamedBy(const Enum (&all)[Count], Name name) {
   std::map<std::string, Enum> names;
   for (Enum value : all) names.emplace(name(value), value);
   return choices(std::move(names));
