@@ -152,7 +152,7 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
   const int passCount = static_cast<int>(passes.size());
   TessellatedScene tessellated = tessellateForRaster(scene, settings, passes[0].time);
   Film film(settings.width, settings.height, settings.sampling.filter);
-  FilmTile filmTile = film.tileFor({0, 0, settings.width, settings.height});
+  const Workers workers(settings.threads);
 
   RenderResult accumulated;
   for (int pass = 0; pass < passCount && !observer.cancelled(); ++pass) {
@@ -160,9 +160,7 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
       tessellated = tessellateForRaster(scene, settings, passes[pass].time);
     PassObserver passObserver(observer, pass, passCount);
     RenderResult result = renderPass(tessellated, passes[pass], passObserver);
-    for (int y = 0; y < settings.height; ++y)
-      for (int x = 0; x < settings.width; ++x)
-        filmTile.addSample({x, y}, passes[pass].pixelOffset, result.image.at(x, y));
+    film.addImage(result.image, passes[pass].pixelOffset, workers);
     if (pass == 0) {
       accumulated = std::move(result);
       continue;
@@ -173,8 +171,7 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
     for (int y = 0; y < settings.height; ++y)
       for (int x = 0; x < settings.width; ++x) cost.at(x, y) += passCost.at(x, y);
   }
-  film.merge(filmTile);
-  accumulated.image = film.resolve();
+  accumulated.image = film.resolve(workers);
   // A frame is drawn whole, each polygon at once: a region is cut from it.
   cropToRegion(accumulated, settings);
   const double covered = accumulated.stats.value("covered_pixels");

@@ -89,7 +89,7 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
     counters += tile.counters;
     refinedPixels += tile.refinedPixels;
   }
-  result.image = film.resolve();
+  result.image = film.resolve(workers);
   cropToRegion(result, settings);
   counters.addTo(result.stats);
   result.stats.add("samples_per_pixel", settings.sampling.samples);

@@ -8,6 +8,9 @@ namespace rise {
 namespace {
 
 constexpr float kGaussianSigma = 0.5f;
+// Rows of the image a worker takes at a time when the film is added to or
+// resolved whole.
+constexpr int kRowsPerRange = 16;
 
 float gaussian(float x) { return std::exp(-x * x / (2.0f * kGaussianSigma * kGaussianSigma)); }
 
@@ -79,14 +82,46 @@ void Film::merge(const FilmTile& tile) {
   }
 }
 
-Image Film::resolve() const {
-  Image image(width_, height_);
-  for (int y = 0; y < height_; ++y) {
-    for (int x = 0; x < width_; ++x) {
-      const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
-      if (weightSum_[i] > 0.0f) image.at(x, y) = weightedSum_[i] / weightSum_[i];
+void Film::addImage(const Image& samples, const Vec2& offset, const Workers& workers) {
+  assert(samples.width() == width_ && samples.height() == height_);
+  // The samples a pixel takes, by their step from it, in the raster order in
+  // which FilmTile::addSample would add them; the same weights everywhere,
+  // since every sample lies at the same offset in its pixel.
+  struct Neighbour {
+    int dx, dy;
+    float weight;
+  };
+  std::vector<Neighbour> neighbours;
+  const int reach = static_cast<int>(std::ceil(filter_.radius()));
+  for (int dy = -reach; dy <= reach; ++dy)
+    for (int dx = -reach; dx <= reach; ++dx) {
+      const float weight = filter_.weight(Vec2(static_cast<float>(dx), static_cast<float>(dy)) +
+                                          (offset - Vec2(0.5f)));
+      if (weight != 0.0f) neighbours.push_back({dx, dy, weight});
     }
-  }
+  workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
+    for (int y = firstRow; y < endRow; ++y)
+      for (int x = 0; x < width_; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
+        for (const Neighbour& n : neighbours) {
+          const int sx = x + n.dx, sy = y + n.dy;
+          if (sx < 0 || sx >= width_ || sy < 0 || sy >= height_) continue;
+          weightedSum_[i] += n.weight * samples.at(sx, sy);
+          weightSum_[i] += n.weight;
+        }
+      }
+  });
+}
+
+Image Film::resolve(const Workers& workers) const {
+  Image image(width_, height_);
+  workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
+    for (int y = firstRow; y < endRow; ++y)
+      for (int x = 0; x < width_; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
+        if (weightSum_[i] > 0.0f) image.at(x, y) = weightedSum_[i] / weightSum_[i];
+      }
+  });
   return image;
 }
 

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "core/parallel.hpp"
 #include "core/sampling.hpp"
 
 namespace rise {
@@ -43,8 +44,15 @@ class Film {
   FilmTile tileFor(const PixelRect& tile) const;
   void merge(const FilmTile& tile);
 
-  // The weighted average at every pixel; black where no sample reached.
-  Image resolve() const;
+  // Adds an image of samples, each taken in its pixel at the same `offset`
+  // (a pass of the accumulation buffer): the same sums, in the same order,
+  // as adding them one by one in raster order, but gathered pixel by pixel,
+  // so that the workers share the rows.
+  void addImage(const Image& samples, const Vec2& offset, const Workers& workers);
+
+  // The weighted average at every pixel, the workers sharing the rows; black
+  // where no sample reached.
+  Image resolve(const Workers& workers) const;
 
  private:
   int width_;

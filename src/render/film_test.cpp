@@ -32,7 +32,7 @@ Image filmOf(FilterKind filter, int width, int height, const std::function<Color
         for (const Vec2& offset : offsets) filmTile.addSample({x, y}, offset, color(x, y));
     film.merge(filmTile);
   }
-  return film.resolve();
+  return film.resolve(Workers(2));
 }
 
 TEST(Film, BoxAveragesEachPixelsOwnSamples) {
@@ -60,6 +60,38 @@ TEST(Film, TentBlendsNeighboursAcrossTiles) {
   EXPECT_GT(image.at(3, 0).r, 0.0f);
   EXPECT_LT(image.at(4, 0).r, 1.0f);
   EXPECT_FLOAT_EQ(image.at(3, 0).r + image.at(4, 0).r, 1.0f);  // symmetric about the edge
+}
+
+// A pass of the accumulation buffer added whole gives the image that its
+// samples added one by one, in raster order, give: bit for bit, with every
+// filter, at offsets on and off the pixels' borders, on any number of threads.
+TEST(Film, AnImageAddedWholeEqualsItsSamplesAddedOneByOne) {
+  const int width = 13, height = 9;
+  const auto color = [](int x, int y, int pass) {
+    return Color(0.1f * static_cast<float>(x % 5), 0.37f * static_cast<float>(y % 3),
+                 0.05f * static_cast<float>(pass + x * y % 7));
+  };
+  const std::vector<Vec2> offsets = {{0.5f, 0.5f}, {0.0f, 0.999f}, {0.13f, 0.71f}, {0.9f, 0.2f}};
+  for (FilterKind filter : {FilterKind::Box, FilterKind::Tent, FilterKind::Gaussian}) {
+    Film oneByOne(width, height, filter);
+    FilmTile whole = oneByOne.tileFor({0, 0, width, height});
+    for (int pass = 0; pass < static_cast<int>(offsets.size()); ++pass)
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) whole.addSample({x, y}, offsets[pass], color(x, y, pass));
+    oneByOne.merge(whole);
+    const Image expected = oneByOne.resolve(Workers(1));
+    for (int threads : {1, 3}) {
+      Film byImages(width, height, filter);
+      for (int pass = 0; pass < static_cast<int>(offsets.size()); ++pass) {
+        Image samples(width, height);
+        for (int y = 0; y < height; ++y)
+          for (int x = 0; x < width; ++x) samples.at(x, y) = color(x, y, pass);
+        byImages.addImage(samples, offsets[pass], Workers(threads));
+      }
+      EXPECT_EQ(byImages.resolve(Workers(threads)).pixels(), expected.pixels())
+          << toString(filter) << ", " << threads << " threads";
+    }
+  }
 }
 
 }  // namespace

@@ -18,7 +18,8 @@ TriangleMesh::TriangleMesh(MeshGeometry geometry, int material)
       vertices_(std::move(geometry.positions)),
       triangles_(std::move(geometry.triangles)),
       normals_(std::move(geometry.normals)),
-      uvs_(std::move(geometry.uvs)) {
+      uvs_(std::move(geometry.uvs)),
+      enclosesSolid_(enclosesSolid(vertices_, triangles_)) {
   assert(normals_.empty() || normals_.size() == vertices_.size());
   assert(uvs_.empty() || uvs_.size() == vertices_.size());
   for ([[maybe_unused]] const auto& triangle : triangles_)
@@ -110,7 +111,7 @@ void TriangleMesh::tessellate(const TessellationSettings&, Tessellation& out) co
       out.addTriangle(first, first + 1, first + 2, triangle);
     }
   }
-  out.enclosesSolid = enclosesSolid(vertices_, triangles_);
+  out.enclosesSolid = enclosesSolid_;
 }
 
 }  // namespace rise

@@ -36,6 +36,10 @@ class TriangleMesh final : public Shape {
   std::vector<std::array<int, 3>> triangles_;
   std::vector<Vec3> normals_;  // one per vertex, or none
   std::vector<Vec2> uvs_;      // one per vertex, or none
+  // Whether the triangles close around a solid: found once, where the mesh
+  // is made, since its triangles never change, rather than at every
+  // tessellation.
+  bool enclosesSolid_;
 };
 
 }  // namespace rise
