@@ -110,9 +110,11 @@ int cubeFaceOf(const Vec3& offset) {
 // nothing that matters there), along the light's direction `travel`.
 std::vector<LightView> orthographicView(const TessellatedScene& tessellated, const Scene& scene,
                                         const Vec3& travel, int size) {
+  std::vector<bool> finite;
+  for (const auto& shape : scene.shapes) finite.push_back(shape->bounds().isFinite());
   Bounds3 bounds;
   for (const SceneFace& face : tessellated.faces)
-    if (scene.shapes[face.shape]->bounds().isFinite())
+    if (finite[static_cast<std::size_t>(face.shape)])
       for (int vertex : face.vertices) bounds.grow(tessellated.vertices[vertex].position);
   if (bounds.isEmpty()) return {};
   const Vec3 centre = 0.5f * (bounds.min + bounds.max);

@@ -4,6 +4,7 @@
 
 #include "raster/visible_surface_renderer.hpp"
 #include "scene/shapes/convex_polygon.hpp"
+#include "scene/shapes/triangle_mesh.hpp"
 
 namespace rise {
 namespace {
@@ -109,6 +110,66 @@ TEST(ShadowMaps, TheBiasClearsShadowAcne) {
   };
   EXPECT_GT(selfShadowed(0.0f), 10);
   EXPECT_EQ(selfShadowed(1.5f), 0);
+}
+
+// A grid of triangles that counts how often it is asked for its bounds.
+class CountedGrid final : public Shape {
+ public:
+  explicit CountedGrid(int side) : Shape(1), mesh_(grid(side), 1) {}
+
+  bool intersect(const Ray& ray, float tMin, Hit& hit,
+                 IntersectionCounters& counters) const override {
+    return mesh_.intersect(ray, tMin, hit, counters);
+  }
+  SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override {
+    return mesh_.surfaceAt(ray, hit);
+  }
+  Bounds3 bounds() const override {
+    ++boundsAsked;
+    return mesh_.bounds();
+  }
+  void tessellate(const TessellationSettings& settings, Tessellation& out) const override {
+    mesh_.tessellate(settings, out);
+  }
+
+  mutable int boundsAsked = 0;
+
+ private:
+  // side x side squares of two triangles at height 1 over [-1, 1]^2.
+  static MeshGeometry grid(int side) {
+    MeshGeometry geometry;
+    const auto at = [&](int i, int j) { return i * (side + 1) + j; };
+    for (int i = 0; i <= side; ++i)
+      for (int j = 0; j <= side; ++j)
+        geometry.positions.emplace_back(2.0f * static_cast<float>(i) / side - 1.0f, 1.0f,
+                                        2.0f * static_cast<float>(j) / side - 1.0f);
+    for (int i = 0; i < side; ++i)
+      for (int j = 0; j < side; ++j) {
+        geometry.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
+        geometry.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+      }
+    return geometry;
+  }
+
+  TriangleMesh mesh_;
+};
+
+// A directional light's map frames the finite shapes: each shape is asked
+// for its bounds once, not once for each of its faces (a mesh finds its
+// bounds over all its triangles: once a face, a large mesh took minutes).
+TEST(ShadowMaps, ADirectionalLightAsksEachShapeForItsBoundsOnce) {
+  Scene scene = squareOverAFloor();
+  auto grid = std::make_unique<CountedGrid>(40);
+  const CountedGrid& counted = *grid;
+  scene.shapes.push_back(std::move(grid));
+  scene.lights.push_back(std::make_unique<DirectionalLight>(Vec3(0, -1, 0), Color(1.0f)));
+  const TessellatedScene faces = tessellated(scene);
+  ASSERT_EQ(faces.faces.size(), 2u * 2u + 2u * 40u * 40u);
+  counted.boundsAsked = 0;
+  const ShadowMaps maps(scene, faces, {256, 1.5f, 1}, Workers(2));
+  EXPECT_EQ(counted.boundsAsked, 1);
+  EXPECT_EQ(maps.reaching(0, Vec3(0.5f, 0, 0.5f), kUp), Color(0.0f));  // under the grid
+  EXPECT_EQ(maps.reaching(0, Vec3(3, 0, 3), kUp), Color(1.0f));
 }
 
 }  // namespace

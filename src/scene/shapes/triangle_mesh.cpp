@@ -25,6 +25,8 @@ TriangleMesh::TriangleMesh(MeshGeometry geometry, int material)
   for ([[maybe_unused]] const auto& triangle : triangles_)
     for ([[maybe_unused]] int index : triangle)
       assert(index >= 0 && static_cast<std::size_t>(index) < vertices_.size());
+  for (int triangle = 0; triangle < primitiveCount(); ++triangle)
+    bounds_.grow(primitiveBounds(triangle));
 }
 
 bool TriangleMesh::intersect(const Ray& ray, float tMin, Hit& hit,
@@ -53,12 +55,7 @@ SurfacePoint TriangleMesh::surfaceAt(const Ray& ray, const Hit& hit) const {
   return surface;
 }
 
-Bounds3 TriangleMesh::bounds() const {
-  Bounds3 box;
-  for (int triangle = 0; triangle < primitiveCount(); ++triangle)
-    box.grow(primitiveBounds(triangle));
-  return box;
-}
+Bounds3 TriangleMesh::bounds() const { return bounds_; }
 
 int TriangleMesh::primitiveCount() const { return static_cast<int>(triangles_.size()); }
 

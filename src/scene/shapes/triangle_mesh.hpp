@@ -36,9 +36,9 @@ class TriangleMesh final : public Shape {
   std::vector<std::array<int, 3>> triangles_;
   std::vector<Vec3> normals_;  // one per vertex, or none
   std::vector<Vec2> uvs_;      // one per vertex, or none
-  // Whether the triangles close around a solid: found once, where the mesh
-  // is made, since its triangles never change, rather than at every
-  // tessellation.
+  // Found once, where the mesh is made, since its triangles never change:
+  // their bounds, and whether they close around a solid.
+  Bounds3 bounds_;
   bool enclosesSolid_;
 };
 
