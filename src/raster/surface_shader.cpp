@@ -135,7 +135,11 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre,
   if (projection) projection->mapOnto(surface);
 
   const Material& material = scene_.materials[sceneFace.material];
-  const SurfaceColors colors = surfaceColors(material, surface, uvFootprint(face, centre, surface));
+  // The footprint is found only where a texture is there to be averaged over it.
+  const SurfaceColors colors =
+      material.texture || material.ksTexture
+          ? surfaceColors(material, surface, uvFootprint(face, centre, surface))
+          : surfaceColors(material, surface);
   const int side = sideSeen(screenFace);
   Color color;
   switch (shading_) {
