@@ -48,6 +48,7 @@ int render(const RenderOptions& options, const CLI::App& command) {
   std::variant<Job, int> prepared = prepare(options.settings, {algorithm.family});
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   Job& job = std::get<Job>(prepared);
+  job.settings.buffers = options.outputs.buffers;  // those --aov writes, and no others
   noteUnreadOptions(command, algorithm);
 
   const std::optional<PixelRect>& tile = job.settings.region;

@@ -93,12 +93,13 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // An image of the size and, all of zeros, the "cost" buffer and, with
 // `whatWasHit`, those of what the primary rays hit: the accumulation keeps
 // those of its first pass alone (visible_surface_renderer.hpp).
-RenderResult blankResult(int width, int height, bool whatWasHit) {
-  RenderResult result{Image(width, height), {}, {}};
-  result.buffers.emplace("cost", Image(width, height));
+RenderResult blankResult(const RenderSettings& settings, bool whatWasHit) {
+  RenderResult result{Image(settings.width, settings.height), {}, {}};
+  result.buffers.emplace("cost", Image(settings.width, settings.height));
   if (whatWasHit)
     for (const char* name : {"depth", "normal", "face"})
-      result.buffers.emplace(name, Image(width, height));
+      if (settings.wantsBuffer(name))
+        result.buffers.emplace(name, Image(settings.width, settings.height));
   return result;
 }
 
@@ -150,7 +151,7 @@ class HybridPass {
     BandWork found = inBands<BandWork>([&](int x, int y, BandWork& band) { findHit(x, y, band); });
     counters += found.counters;
     followOutlines(std::move(found.seeds), counters);
-    Images images(settings_.width, settings_.height, recording_.index == 0);
+    Images images(settings_, recording_.index == 0);
     counters += inBands<HybridCounters>(
         [&](int x, int y, HybridCounters& band) { shade(x, y, images, band); },
         [&](const PixelRect& band, int task, const HybridCounters& bandCounters) {
@@ -303,20 +304,16 @@ class HybridPass {
 
   // The pass's image and buffers, filled pixel by pixel.
   struct Images {
-    Images(int width, int height, bool whatWasHit)
-        : result{blankResult(width, height, whatWasHit)} {}
-
-    Image* buffer(std::string_view name) {
-      const auto found = result.buffers.find(name);
-      return found == result.buffers.end() ? nullptr : &found->second;
-    }
+    Images(const RenderSettings& settings, bool whatWasHit)
+        : result{blankResult(settings, whatWasHit)} {}
 
     RenderResult result;
     Image& image = result.image;
     Image& cost = result.buffers.at("cost");
-    Image* depth = buffer("depth");  // none but in the first pass
-    Image* normal = buffer("normal");
-    Image* face = buffer("face");
+    // None but in the first pass, and there only those wanted.
+    Image* depth = result.buffer("depth");
+    Image* normal = result.buffer("normal");
+    Image* face = result.buffer("face");
   };
 
   // Whitted's Shade from the item's hit, or his whole primary ray where the
@@ -353,10 +350,9 @@ class HybridPass {
 
     images.image.at(x, y) = sample.color;
     images.cost.at(x, y) = Color(static_cast<float>(pixel.tests));
-    if (!images.depth) return;
-    images.depth->at(x, y) = Color(sample.depth);
-    images.normal->at(x, y) = sample.normal;
-    images.face->at(x, y) = Color(static_cast<float>(items_->sceneFaceAt(x, y)));
+    if (images.depth) images.depth->at(x, y) = Color(sample.depth);
+    if (images.normal) images.normal->at(x, y) = sample.normal;
+    if (images.face) images.face->at(x, y) = Color(static_cast<float>(items_->sceneFaceAt(x, y)));
   }
 
   const TracingContext& context_;

@@ -1,30 +1,35 @@
 #include "raster/raster_frame.hpp"
 
-#include <array>
+#include <algorithm>
+#include <utility>
 
 namespace rise {
 
-RasterFrame::RasterFrame(int width, int height, const Color& background,
+RasterFrame::RasterFrame(const RenderSettings& settings, const Color& background,
                          const ScreenGeometry& screen, const SurfaceShader& shader,
                          const Workers& workers, StepRecorder* steps, ShadowVolumes* shadowVolumes)
     : screen_(screen),
       shader_(shader),
       steps_(steps),
       shadowVolumes_(shadowVolumes),
-      background_(background) {
-  // Filling five image-sized buffers is a fair share of a frame of a large
-  // image: the render's workers share it.
-  const std::array<Color, 5> fills = {background, Color(kInfinity), Color(0.0f), Color(-1.0f),
-                                      Color(0.0f)};
-  std::array<Image, 5> images;
-  workers.forEachRange(static_cast<int>(images.size()), 1, [&](int image, int, int) {
-    images[image] = Image(width, height, fills[image]);
+      background_(background),
+      cost_(&result_.buffers["cost"]),
+      wantsFaces_(settings.wantsBuffer("face")) {
+  // Filling image-sized buffers is a fair share of a frame of a large image:
+  // only those wanted are made, and the render's workers share them.
+  std::vector<std::pair<Image*, Color>> fills{{&result_.image, background}, {cost_, Color(0.0f)}};
+  if (settings.wantsBuffer("depth"))
+    fills.emplace_back(depth_ = &result_.buffers["depth"], Color(kInfinity));
+  if (settings.wantsBuffer("normal"))
+    fills.emplace_back(normal_ = &result_.buffers["normal"], Color(0.0f));
+  const int width = settings.width, height = settings.height;
+  const int count = static_cast<int>(fills.size());
+  workers.forEachRange(count + 1, 1, [&](int fill, int, int) {
+    if (fill == count)
+      faces_.assign(static_cast<std::size_t>(width) * height, -1);
+    else
+      *fills[fill].first = Image(width, height, fills[fill].second);
   });
-  result_.image = std::move(images[0]);
-  depth_ = &(result_.buffers["depth"] = std::move(images[1]));
-  normal_ = &(result_.buffers["normal"] = std::move(images[2]));
-  face_ = &(result_.buffers["face"] = std::move(images[3]));
-  cost_ = &(result_.buffers["cost"] = std::move(images[4]));
 }
 
 ShadedPixel RasterFrame::shadeAt(int x, int y, int face) const {
@@ -37,9 +42,9 @@ ShadedPixel RasterFrame::shadeAt(int x, int y, int face) const {
 void RasterFrame::setVisible(int x, int y, int face) {
   const ShadedPixel pixel = shadeAt(x, y, face);
   result_.image.at(x, y) = pixel.color;
-  depth_->at(x, y) = Color(pixel.depth);
-  normal_->at(x, y) = pixel.normal;
-  face_->at(x, y) = Color(static_cast<float>(screen_.faces[face].sceneFace));
+  if (depth_) depth_->at(x, y) = Color(pixel.depth);
+  if (normal_) normal_->at(x, y) = pixel.normal;
+  faces_[static_cast<std::size_t>(y) * width() + x] = screen_.faces[face].sceneFace;
 }
 
 void RasterFrame::blendVisible(int x, int y, int face) {
@@ -69,9 +74,19 @@ StepShape outlineOf(std::span<const Vec3> corners, std::string role) {
 }
 
 std::uint64_t RasterFrame::coveredPixels() const {
-  std::uint64_t covered = 0;
-  for (const Color& face : face_->pixels()) covered += face.r >= 0.0f ? 1 : 0;
-  return covered;
+  return static_cast<std::uint64_t>(
+      std::count_if(faces_.begin(), faces_.end(), [](int face) { return face >= 0; }));
+}
+
+RenderResult RasterFrame::takeResult() {
+  if (wantsFaces_) {
+    Image& faces = result_.buffers["face"] = Image(width(), height());
+    for (int y = 0; y < height(); ++y)
+      for (int x = 0; x < width(); ++x)
+        faces.at(x, y) =
+            Color(static_cast<float>(faces_[static_cast<std::size_t>(y) * width() + x]));
+  }
+  return std::move(result_);
 }
 
 }  // namespace rise

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "raster/shadow_volumes.hpp"
 #include "raster/surface_shader.hpp"
@@ -19,7 +20,8 @@ namespace rise {
 
 class RasterFrame final : public VisibleFaces {
  public:
-  RasterFrame(int width, int height, const Color& background, const ScreenGeometry& screen,
+  // Of the auxiliary buffers, those the settings want.
+  RasterFrame(const RenderSettings& settings, const Color& background, const ScreenGeometry& screen,
               const SurfaceShader& shader, const Workers& workers, StepRecorder* steps,
               ShadowVolumes* shadowVolumes = nullptr);
 
@@ -54,7 +56,7 @@ class RasterFrame final : public VisibleFaces {
   const Image& image() const { return result_.image; }
 
   // The image and its buffers, for the render's result.
-  RenderResult takeResult() { return std::move(result_); }
+  RenderResult takeResult();
 
  private:
   // What a transparent face lets through: its transmission times its colour.
@@ -67,10 +69,13 @@ class RasterFrame final : public VisibleFaces {
   ShadowVolumes* shadowVolumes_;
   Color background_;
   RenderResult result_;
-  Image* depth_;
-  Image* normal_;
-  Image* face_;
+  Image* depth_ = nullptr;  // or none, where not wanted
+  Image* normal_ = nullptr;
   Image* cost_;
+  // The scene face seen at each pixel, or -1: the "face" buffer, where
+  // wanted, and the pixels covered.
+  std::vector<int> faces_;
+  bool wantsFaces_;
 };
 
 // The outline of a polygon on the screen, for a step's record.

@@ -198,8 +198,8 @@ RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
     shadowVolumes.emplace(scene, tessellated, view, workers);
   const SurfaceShader shader(scene, tessellated, screen, view, settings.shading, workers,
                              shadowMaps ? &*shadowMaps : nullptr);
-  RasterFrame frame(settings.width, settings.height, scene.image.background, screen, shader,
-                    workers, observer.stepRecorder(), shadowVolumes ? &*shadowVolumes : nullptr);
+  RasterFrame frame(settings, scene.image.background, screen, shader, workers,
+                    observer.stepRecorder(), shadowVolumes ? &*shadowVolumes : nullptr);
 
   Stats stats;
   addProjectionStats(stats, screen);

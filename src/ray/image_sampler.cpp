@@ -21,14 +21,14 @@ TileTrace::TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers
       film_(std::move(film)),
       observer_(observer),
       steps_(observer.stepRecorder()),
-      depth_(buffers.buffers.at("depth")),
-      normal_(buffers.buffers.at("normal")),
+      depth_(buffers.buffer("depth")),
+      normal_(buffers.buffer("normal")),
       cost_(buffers.buffers.at("cost")) {}
 
 void TileTrace::recordBuffers(const glm::ivec2& pixel, const SampleResult& shown,
                               std::uint64_t tests) {
-  depth_.at(pixel.x, pixel.y) = Color(shown.depth);
-  normal_.at(pixel.x, pixel.y) = shown.normal;
+  if (depth_) depth_->at(pixel.x, pixel.y) = Color(shown.depth);
+  if (normal_) normal_->at(pixel.x, pixel.y) = shown.normal;
   cost_.at(pixel.x, pixel.y) = Color(static_cast<float>(tests));
 }
 
@@ -55,8 +55,10 @@ Step tileStep(const TileTrace& tile) {
 RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer,
                         const std::function<void(TileTrace&)>& traceTile) {
   RenderResult result;
-  result.buffers["depth"] = Image(settings.width, settings.height, Color(kInfinity));
-  result.buffers["normal"] = Image(settings.width, settings.height);
+  if (settings.wantsBuffer("depth"))
+    result.buffers["depth"] = Image(settings.width, settings.height, Color(kInfinity));
+  if (settings.wantsBuffer("normal"))
+    result.buffers["normal"] = Image(settings.width, settings.height);
   result.buffers["cost"] = Image(settings.width, settings.height);
   Film film(settings.width, settings.height, settings.sampling.filter);
 

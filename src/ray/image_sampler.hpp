@@ -62,8 +62,8 @@ class TileTrace {
   FilmTile film_;
   const RenderObserver& observer_;
   StepRecorder* steps_;
-  Image& depth_;
-  Image& normal_;
+  Image* depth_;  // or none, where not wanted
+  Image* normal_;
   Image& cost_;
 };
 

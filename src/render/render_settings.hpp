@@ -3,9 +3,12 @@
 // end overrides them (algorithms/render_settings_builder.hpp).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/image.hpp"
 #include "core/sampling.hpp"
@@ -76,8 +79,18 @@ struct RenderSettings {
   // (the random numbers of a pixel depend on the pixel, not on the part).
   std::optional<PixelRect> region;
 
+  // The auxiliary buffers to fill beside the image ("depth", "normal",
+  // "face"): every one the algorithm has, or only those named, for a front
+  // end that writes a few and need not pay for the others. The "cost"
+  // buffer, which the accumulation passes add up, and the shadow map are
+  // always there.
+  std::optional<std::vector<std::string>> buffers;
+
   // The pixels rendered: the region, or the whole image.
   PixelRect area() const { return region.value_or(PixelRect{0, 0, width, height}); }
+  bool wantsBuffer(std::string_view name) const {
+    return !buffers || std::find(buffers->begin(), buffers->end(), name) != buffers->end();
+  }
 };
 
 }  // namespace rise

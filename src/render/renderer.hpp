@@ -26,6 +26,13 @@ struct RenderResult {
   Image image;
   std::map<std::string, Image, std::less<>> buffers;
   Stats stats;
+
+  // The buffer of that name, or nullptr where the render made none (the
+  // settings did not want it).
+  Image* buffer(std::string_view name) {
+    const auto found = buffers.find(name);
+    return found == buffers.end() ? nullptr : &found->second;
+  }
 };
 
 // Cuts the image and the auxiliary buffers of its size of a whole-image

@@ -1,0 +1,56 @@
+// A front end that writes only some auxiliary buffers (`rise render --aov`)
+// names them in the settings, and the algorithms make only those: every
+// algorithm, with one sample and with several, gives the same image and the
+// same values in the buffers it was asked for as when it makes them all.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "algorithms/registry.hpp"
+#include "algorithms/settings_for_scene.hpp"
+#include "io/scene_file.hpp"
+
+namespace rise {
+namespace {
+
+std::vector<std::string> namesOf(const RenderResult& result) {
+  std::vector<std::string> names;
+  for (const auto& [name, buffer] : result.buffers) names.push_back(name);
+  return names;
+}
+
+TEST(ChosenBuffers, OnlyThoseNamedAreMadeAndTheImageIsTheSame) {
+  const Scene scene = loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/classic.yaml");
+  for (const int samples : {1, 3}) {
+    RenderRequest request;
+    request.image.width = 41;
+    request.image.height = 23;
+    request.image.samples = samples;
+    request.settings.threads = 2;
+    const RenderSettings all = settingsFor(scene, request);
+    for (const Renderer* renderer : allRenderers()) {
+      RenderObserver observer;
+      const RenderResult everything = renderer->render(scene, all, observer);
+      for (const std::vector<std::string>& chosen :
+           {std::vector<std::string>{}, {"normal"}, {"face", "depth"}}) {
+        RenderSettings some = all;
+        some.buffers = chosen;
+        const RenderResult result = renderer->render(scene, some, observer);
+        EXPECT_EQ(result.image.pixels(), everything.image.pixels()) << renderer->name();
+        std::vector<std::string> expected{"cost"};
+        for (const std::string& name : chosen)
+          if (renderer->description().writes(name)) expected.push_back(name);
+        std::sort(expected.begin(), expected.end());
+        EXPECT_EQ(namesOf(result), expected) << renderer->name() << ", " << samples << " samples";
+        for (const auto& [name, buffer] : result.buffers)
+          EXPECT_EQ(buffer.pixels(), everything.buffers.at(name).pixels())
+              << renderer->name() << ": " << name;
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rise
