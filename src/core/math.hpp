@@ -33,6 +33,13 @@ inline bool isFinite(const Vec3& v) {
   return glm::all(glm::lessThan(glm::abs(v), Vec3(kInfinity)));
 }
 
+// The corner after corner i of a polygon of `count` corners, the last
+// followed by the first: by a comparison rather than a division, since it
+// runs for every edge of every polygon drawn.
+inline std::size_t nextCorner(std::size_t i, std::size_t count) {
+  return i + 1 < count ? i + 1 : 0;
+}
+
 inline float maxComponent(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
 
 // The axis (0, 1 or 2) of the largest component, the first of equals.

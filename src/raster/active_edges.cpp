@@ -15,7 +15,7 @@ void ActiveEdgeList::buildEdgeTable(const ScreenGeometry& screen) {
     const std::span<const Vec3> corners = screen.cornersOf(screen.polygons[polygons_[order]]);
     for (std::size_t i = 0; i < corners.size(); ++i) {
       const Vec3& from = corners[i];
-      const Vec3& to = corners[(i + 1) % corners.size()];
+      const Vec3& to = corners[nextCorner(i, corners.size())];
       if (from.y == to.y) continue;  // horizontal: it crosses no scanline centre
       const Vec3& top = from.y < to.y ? from : to;
       const Vec3& bottom = from.y < to.y ? to : from;

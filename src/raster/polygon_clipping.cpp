@@ -8,7 +8,7 @@ void splitPolygon(std::span<const Vec3> polygon, const glm::vec4& plane, float t
   negative.clear();
   for (std::size_t i = 0; i < polygon.size(); ++i) {
     const Vec3& from = polygon[i];
-    const Vec3& to = polygon[(i + 1) % polygon.size()];
+    const Vec3& to = polygon[nextCorner(i, polygon.size())];
     const float fromDistance = signedDistance(plane, from);
     const float toDistance = signedDistance(plane, to);
     if (fromDistance >= -tolerance) positive.push_back(from);

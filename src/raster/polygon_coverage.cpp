@@ -25,7 +25,7 @@ void PolygonCoverage::reset(std::span<const Vec3> corners) {
   double twiceArea = 0.0;
   for (std::size_t i = 0; i < corners.size(); ++i) {
     const Vec3& p = corners[i];
-    const Vec3& q = corners[(i + 1) % corners.size()];
+    const Vec3& q = corners[nextCorner(i, corners.size())];
     twiceArea += static_cast<double>(p.x) * q.y - static_cast<double>(q.x) * p.y;
   }
   if (twiceArea == 0.0) return;
@@ -35,7 +35,7 @@ void PolygonCoverage::reset(std::span<const Vec3> corners) {
 
   for (std::size_t i = 0; i < corners.size(); ++i) {
     const Vec2 from(corners[i]);
-    const Vec2 to(corners[(i + 1) % corners.size()]);
+    const Vec2 to(corners[nextCorner(i, corners.size())]);
     if (from == to) continue;
     const bool canonical = std::tie(from.y, from.x) < std::tie(to.y, to.x);
     Edge edge;

@@ -14,7 +14,7 @@ constexpr float kOverlapTolerance = 1e-4f;
 // apart.
 bool separatedByAnEdgeOf(std::span<const Vec3> a, std::span<const Vec3> b) {
   for (std::size_t i = 0; i < a.size(); ++i) {
-    const Vec2 edge = Vec2(a[(i + 1) % a.size()]) - Vec2(a[i]);
+    const Vec2 edge = Vec2(a[nextCorner(i, a.size())]) - Vec2(a[i]);
     const float length = glm::length(edge);
     if (length == 0.0f) continue;
     const Vec2 axis = Vec2(-edge.y, edge.x) / length;

@@ -17,7 +17,7 @@ namespace {
 constexpr float kRelativeTolerance = 1e-5f;
 
 const Vec3& nextVertex(const std::vector<Vec3>& vertices, std::size_t i) {
-  return vertices[(i + 1) % vertices.size()];
+  return vertices[nextCorner(i, vertices.size())];
 }
 
 // Twice the polygon's vector area, summed over its fan of triangles from the
