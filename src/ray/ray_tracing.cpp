@@ -60,7 +60,8 @@ namespace {
 
 ShadingFrame shadingFrame(const Ray& ray, const Hit& hit, const Material& material) {
   ShadingFrame frame;
-  frame.surface = hit.shape->surfaceAt(ray, hit);
+  frame.surface =
+      material.readsTextureFrame() ? hit.shape->surfaceAt(ray, hit) : hit.shape->pointAt(ray, hit);
   frame.surface.shadingNormal = shadingNormal(material, frame.surface);
   frame.toViewer = -glm::normalize(ray.direction);
   frame.time = ray.time;

@@ -37,6 +37,9 @@ struct Material {
   std::shared_ptr<const Texture> ksTexture;
 
   bool isTransparent() const { return transmission > 0.0f; }
+  // Whether shading reads the surface's texture coordinates and tangents:
+  // for a texture, or for a map that tilts the normal.
+  bool readsTextureFrame() const { return texture || ksTexture || bump || normalMap; }
 };
 
 }  // namespace rise

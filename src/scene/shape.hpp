@@ -84,6 +84,11 @@ class Shape {
 
   // The point and normal of a hit that this shape recorded.
   virtual SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const = 0;
+  // The same without the texture coordinates and tangents (left zero), for
+  // a material that reads neither (Material::readsTextureFrame). A shape
+  // whose coordinates cost more than its point (a sphere's arc functions)
+  // finds the point alone; the others give surfaceAt's answer.
+  virtual SurfacePoint pointAt(const Ray& ray, const Hit& hit) const { return surfaceAt(ray, hit); }
 
   // The box the shape stays inside (infinite for the plane).
   virtual Bounds3 bounds() const = 0;

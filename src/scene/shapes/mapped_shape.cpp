@@ -20,6 +20,10 @@ SurfacePoint MappedShape::surfaceAt(const Ray& ray, const Hit& hit) const {
   return surface;
 }
 
+SurfacePoint MappedShape::pointAt(const Ray& ray, const Hit& hit) const {
+  return shape_->pointAt(ray, hit);
+}
+
 Bounds3 MappedShape::bounds() const { return shape_->bounds(); }
 
 int MappedShape::primitiveCount() const { return shape_->primitiveCount(); }

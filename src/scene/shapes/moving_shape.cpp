@@ -26,6 +26,11 @@ SurfacePoint MovingShape::surfaceAt(const Ray& ray, const Hit& hit) const {
   return placement.toWorld(shape_->surfaceAt(placement.toObject(ray), hit));
 }
 
+SurfacePoint MovingShape::pointAt(const Ray& ray, const Hit& hit) const {
+  const AffineMap placement = placementAt(ray.time);
+  return placement.toWorld(shape_->pointAt(placement.toObject(ray), hit));
+}
+
 // The shape stays inside the ball around its box. The ball's centre follows a
 // path sampled at many instants; between two samples (a straight step, or a
 // short arc of the rotation) it strays from both by at most the step's

@@ -18,6 +18,7 @@ class MovingShape final : public Shape {
   bool intersect(const Ray& ray, float tMin, Hit& hit,
                  IntersectionCounters& counters) const override;
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
+  SurfacePoint pointAt(const Ray& ray, const Hit& hit) const override;
   // The box that holds the shape throughout the shutter interval.
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;

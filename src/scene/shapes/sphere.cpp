@@ -40,11 +40,15 @@ bool Sphere::intersect(const Ray& ray, float tMin, Hit& hit, IntersectionCounter
 }
 
 SurfacePoint Sphere::surfaceAt(const Ray& ray, const Hit& hit) const {
-  const Vec3 position = ray.at(hit.t);
-  const Vec3 normal = (position - center_) / radius_;
-  SurfacePoint surface(position, normal, sphericalUv(kPolarAxis, normal));
-  sphericalTangents(kPolarAxis, position - center_, surface.dpdu, surface.dpdv);
+  SurfacePoint surface = pointAt(ray, hit);
+  surface.uv = sphericalUv(kPolarAxis, surface.normal);
+  sphericalTangents(kPolarAxis, surface.position - center_, surface.dpdu, surface.dpdv);
   return surface;
+}
+
+SurfacePoint Sphere::pointAt(const Ray& ray, const Hit& hit) const {
+  const Vec3 position = ray.at(hit.t);
+  return {position, (position - center_) / radius_};
 }
 
 Bounds3 Sphere::bounds() const { return {center_ - Vec3(radius_), center_ + Vec3(radius_)}; }

@@ -19,6 +19,10 @@ SurfacePoint TransformedShape::surfaceAt(const Ray& ray, const Hit& hit) const {
   return placement_.toWorld(shape_->surfaceAt(placement_.toObject(ray), hit));
 }
 
+SurfacePoint TransformedShape::pointAt(const Ray& ray, const Hit& hit) const {
+  return placement_.toWorld(shape_->pointAt(placement_.toObject(ray), hit));
+}
+
 Bounds3 TransformedShape::bounds() const { return placement_.boundsToWorld(shape_->bounds()); }
 
 int TransformedShape::primitiveCount() const { return shape_->primitiveCount(); }
