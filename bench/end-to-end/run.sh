@@ -15,13 +15,15 @@
 #     1920x1080: RISE's render_seconds against llvmpipe's frame
 #     (bench/raster/osmesa_gouraud.cpp).
 # Each is run --runs times, interleaved, and the best counts: the noise of a
-# shared machine only ever adds time.
+# shared machine only ever adds time. With --baseline, another build of RISE
+# takes its turn beside it in every run, so that a change is judged against
+# the same peers' times, and a second table gives its rows.
 set -euo pipefail
 shopt -s inherit_errexit
 
 usage() {
   cat <<EOF
-usage: bench/end-to-end/run.sh [--runs N] [--threads N] [--out DIR] [BUILD_DIR]
+usage: bench/end-to-end/run.sh [--runs N] [--threads N] [--out DIR] [--baseline DIR] [BUILD_DIR]
   BUILD_DIR     a Release build with link-time optimisation, holding rise and the peers'
                 programs bench/rise_embree_primary_bench and bench/rise_osmesa_bench
                 (default: build-release, made by cmake -B build-release)
@@ -29,25 +31,31 @@ usage: bench/end-to-end/run.sh [--runs N] [--threads N] [--out DIR] [BUILD_DIR]
   --threads N   threads of every renderer (default: 2)
   --out DIR     where the meshes, scenes, images, statistics and logs go
                 (default: out/bench-end-to-end)
+  --baseline DIR
+                another build (before a change), whose RISE runs beside BUILD_DIR's in
+                every run; its rows are printed in a table of their own
 EOF
 }
 
 # shellcheck source=bench/common.sh
 source "$(dirname "${BASH_SOURCE[0]}")/../common.sh"
 
-runs=3 threads=2 out=out/bench-end-to-end build=build-release
-declare -A value_options=([--runs]=runs [--threads]=threads [--out]=out) flag_options=()
+runs=3 threads=2 out=out/bench-end-to-end build=build-release baseline=""
+declare -A value_options=([--runs]=runs [--threads]=threads [--out]=out [--baseline]=baseline)
+declare -A flag_options=()
 parse_options "$@"
 require_count --runs "$runs" 1
 require_count --threads "$threads" 1
 
 enter_repository
+[[ -z "$baseline" ]] || baseline="$(realpath -m "$baseline")"
 rise="$build/rise"
 embree="$build/bench/rise_embree_primary_bench"
 osmesa="$build/bench/rise_osmesa_bench"
 [[ -x "$rise" ]] || die "no RISE executable at $rise (cmake -B build-release, or pass BUILD_DIR)"
 [[ -x "$embree" ]] || die "no $embree (scripts/install-deps --bench, then build again)"
 [[ -x "$osmesa" ]] || die "no $osmesa (scripts/install-deps --bench, then build again)"
+[[ -z "$baseline" || -x "$baseline/rise" ]] || die "no RISE executable at $baseline/rise"
 command -v povray >/dev/null || die "povray is not installed (scripts/install-deps --bench)"
 grep -q '^CMAKE_INTERPROCEDURAL_OPTIMIZATION:.*=OFF' "$build/CMakeCache.txt" 2>/dev/null &&
   echo "warning: $build is built without link-time optimisation" >&2
@@ -73,37 +81,47 @@ mesh_scene sphere-100k "[]" >"$out/primary.yaml"
 million_triangle_scene
 
 rows=(spheres spheres-aa primary z-buffer scanline)
-declare -A rise_times peer_times
+declare -A rise_times baseline_times peer_times
 for row in "${rows[@]}"; do
   rise_times[$row]=""
+  baseline_times[$row]=""
   peer_times[$row]=""
 done
-# Appends a run's times (RISE's "wall render_seconds" and the peer's) to a row.
-record() {
-  rise_times[$1]+="$2"$'\n'
-  peer_times[$1]+="$3"$'\n'
+# Times a row's render (its name, then the options of `rise render`) by RISE
+# and, when there is one, by the baseline, into rise_time and baseline_time
+# ("wall render_seconds"). Each time is taken into a variable first: a
+# failure inside $(...) given as an argument would go unnoticed.
+render_row() {
+  rise_time="$(timed_render "$rise" "$@")"
+  baseline_time=""
+  [[ -z "$baseline" ]] || baseline_time="$(timed_render "$baseline/rise" "$1-baseline" "${@:2}")"
 }
-# One run of every row. Each time is taken into a variable first: a failure
-# inside $(...) given as an argument would go unnoticed.
+# Appends a run's times (RISE's, the baseline's, the peer's) to a row.
+record() {
+  rise_times[$1]+="$rise_time"$'\n'
+  baseline_times[$1]+="$baseline_time"$'\n'
+  peer_times[$1]+="$2"$'\n'
+}
+# One run of every row.
 run_rows() {
-  local rise_time peer_time llvmpipe algorithm
-  rise_time="$(timed_render "$rise" spheres examples/spheres.yaml --width 800 --height 600)"
+  local rise_time baseline_time peer_time llvmpipe algorithm
+  render_row spheres examples/spheres.yaml --width 800 --height 600
   peer_time="$(povray_run povray-spheres -A)"
-  record spheres "$rise_time" "$peer_time"
-  rise_time="$(timed_render "$rise" spheres-aa examples/spheres.yaml --width 800 --height 600 \
-    --samples 16 --pattern jittered)"
+  record spheres "$peer_time"
+  render_row spheres-aa examples/spheres.yaml --width 800 --height 600 --samples 16 \
+    --pattern jittered
   peer_time="$(povray_run povray-spheres-aa +A0.0 +AM1 +R4 +J)"
-  record spheres-aa "$rise_time" "$peer_time"
-  rise_time="$(timed_render "$rise" primary "$out/primary.yaml")"
+  record spheres-aa "$peer_time"
+  render_row primary "$out/primary.yaml"
   peer_time="$("$embree" "$out/sphere-100k.ply" 1920 1080 "$threads" 1 \
     "$out/embree-primary.ppm" | sed -n 's/^best_seconds //p')"
-  record primary "$rise_time" "$peer_time"
+  record primary "$peer_time"
   llvmpipe="$(LP_NUM_THREADS="$threads" "$osmesa" "$out/bumpy-sphere.ply" 1920 1080 1 \
     "$out/million-llvmpipe.ppm" | sed -n 's/^best_seconds //p')"
   for algorithm in z-buffer scanline; do
-    rise_time="$(timed_render "$rise" "million-$algorithm" "$out/million.yaml" -a "$algorithm" \
-      --shading gouraud --encoding linear)"
-    record "$algorithm" "$rise_time" "$llvmpipe"
+    render_row "million-$algorithm" "$out/million.yaml" -a "$algorithm" --shading gouraud \
+      --encoding linear
+    record "$algorithm" "$llvmpipe"
   done
 }
 for ((run = 1; run <= runs; ++run)); do
@@ -111,8 +129,12 @@ for ((run = 1; run <= runs; ++run)); do
   run_rows
 done
 
-# The best of a row's runs: RISE's wall time (field 1) or render_seconds (2), the peer's.
-best_rise() { cut -d' ' -f"$2" <<<"${rise_times[$1]}" | grep . | smallest; }
+# The best of a row's runs: RISE's or the baseline's (the array $1) wall time
+# (field 3 = 1) or render_seconds (2), the peer's.
+best_rise() {
+  local -n times="$1"
+  cut -d' ' -f"$3" <<<"${times[$2]}" | grep . | smallest
+}
 best_peer() { grep . <<<"${peer_times[$1]}" | smallest | awk '{ printf "%.3f\n", $1 }'; }
 
 declare -A work=(
@@ -134,22 +156,35 @@ declare -A ratio_of=(
 declare -A target=([spheres]="<= 0.5" [spheres-aa]="<= 0.35" [primary]=">= 0.5"
   [z-buffer]="<= 1.5" [scanline]="<= 2.0")
 
+# The table of RISE's rows, or the baseline's ($1: the array of their times).
+print_table() {
+  local row wall render peer_seconds value
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "work" "RISE wall (s)" "RISE render (s)" \
+    "peer" "peer (s)" "ratio" "ratio is" "target"
+  echo "|---|---|---|---|---|---|---|---|"
+  for row in "${rows[@]}"; do
+    wall="$(best_rise "$1" "$row" 1)"
+    render="$(best_rise "$1" "$row" 2)"
+    peer_seconds="$(best_peer "$row")"
+    case "$row" in
+      spheres*) value="$(ratio "$wall" "$peer_seconds")" ;;
+      primary) value="$(ratio "$peer_seconds" "$render")" ;;
+      *) value="$(ratio "$render" "$peer_seconds")" ;;
+    esac
+    printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "${work[$row]}" "$wall" "$render" \
+      "${peer[$row]}" "$peer_seconds" "$value" "${ratio_of[$row]}" "${target[$row]}"
+  done
+}
+
 echo
 echo "$(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores, $threads threads, best of $runs"
-printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "work" "RISE wall (s)" "RISE render (s)" \
-  "peer" "peer (s)" "ratio" "ratio is" "target"
-echo "|---|---|---|---|---|---|---|---|"
-for row in "${rows[@]}"; do
-  wall="$(best_rise "$row" 1)"
-  render="$(best_rise "$row" 2)"
-  peer_seconds="$(best_peer "$row")"
-  case "$row" in
-    spheres*) value="$(ratio "$wall" "$peer_seconds")" ;;
-    primary) value="$(ratio "$peer_seconds" "$render")" ;;
-    *) value="$(ratio "$render" "$peer_seconds")" ;;
-  esac
-  printf '| %s | %s | %s | %s | %s | %s | %s | %s |\n' "${work[$row]}" "$wall" "$render" \
-    "${peer[$row]}" "$peer_seconds" "$value" "${ratio_of[$row]}" "${target[$row]}"
-done
+if [[ -n "$baseline" ]]; then
+  echo
+  echo "baseline, $baseline:"
+  print_table baseline_times
+  echo
+  echo "$build:"
+fi
+print_table rise_times
 echo
 echo "images: $out/*.png, $out/embree-primary.ppm, $out/million-llvmpipe.ppm"
