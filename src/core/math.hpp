@@ -3,6 +3,7 @@
 // for that scale.
 #pragma once
 
+#include <cmath>
 #include <glm/glm.hpp>
 #include <limits>
 
@@ -30,7 +31,7 @@ inline Vec3 normalizedOrZero(const Vec3& v) {
 
 // Whether no component is NaN or infinite.
 inline bool isFinite(const Vec3& v) {
-  return glm::all(glm::lessThan(glm::abs(v), Vec3(kInfinity)));
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
 
 // The corner after corner i of a polygon of `count` corners, the last
