@@ -90,16 +90,15 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// An image of the size and, all of zeros, the "cost" buffer and, with
-// `whatWasHit`, those of what the primary rays hit: the accumulation keeps
-// those of its first pass alone (visible_surface_renderer.hpp).
+// An image of the size and, all of zeros, the buffers the settings want: the
+// "cost" buffer and, with `whatWasHit`, those of what the primary rays hit,
+// which the accumulation keeps of its first pass alone
+// (visible_surface_renderer.hpp).
 RenderResult blankResult(const RenderSettings& settings, bool whatWasHit) {
   RenderResult result{Image(settings.width, settings.height), {}, {}};
-  result.buffers.emplace("cost", Image(settings.width, settings.height));
-  if (whatWasHit)
-    for (const char* name : {"depth", "normal", "face"})
-      if (settings.wantsBuffer(name))
-        result.buffers.emplace(name, Image(settings.width, settings.height));
+  for (const char* name : {"cost", "depth", "normal", "face"})
+    if (settings.wantsBuffer(name) && (whatWasHit || name == std::string_view("cost")))
+      result.buffers.emplace(name, Image(settings.width, settings.height));
   return result;
 }
 
@@ -309,7 +308,7 @@ class HybridPass {
 
     RenderResult result;
     Image& image = result.image;
-    Image& cost = result.buffers.at("cost");
+    Image* cost = result.buffer("cost");  // or none, where not wanted
     // None but in the first pass, and there only those wanted.
     Image* depth = result.buffer("depth");
     Image* normal = result.buffer("normal");
@@ -349,7 +348,7 @@ class HybridPass {
     pixel.tests += static_cast<std::uint32_t>(traced.intersections.tests - tests);
 
     images.image.at(x, y) = sample.color;
-    images.cost.at(x, y) = Color(static_cast<float>(pixel.tests));
+    if (images.cost) images.cost->at(x, y) = Color(static_cast<float>(pixel.tests));
     if (images.depth) images.depth->at(x, y) = Color(sample.depth);
     if (images.normal) images.normal->at(x, y) = sample.normal;
     if (images.face) images.face->at(x, y) = Color(static_cast<float>(items_->sceneFaceAt(x, y)));

@@ -13,11 +13,12 @@ RasterFrame::RasterFrame(const RenderSettings& settings, const Color& background
       steps_(steps),
       shadowVolumes_(shadowVolumes),
       background_(background),
-      cost_(&result_.buffers["cost"]),
       wantsFaces_(settings.wantsBuffer("face")) {
   // Filling image-sized buffers is a fair share of a frame of a large image:
   // only those wanted are made, and the render's workers share them.
-  std::vector<std::pair<Image*, Color>> fills{{&result_.image, background}, {cost_, Color(0.0f)}};
+  std::vector<std::pair<Image*, Color>> fills{{&result_.image, background}};
+  if (settings.wantsBuffer("cost"))
+    fills.emplace_back(cost_ = &result_.buffers["cost"], Color(0.0f));
   if (settings.wantsBuffer("depth"))
     fills.emplace_back(depth_ = &result_.buffers["depth"], Color(kInfinity));
   if (settings.wantsBuffer("normal"))

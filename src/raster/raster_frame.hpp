@@ -38,7 +38,9 @@ class RasterFrame final : public VisibleFaces {
   // The colour of transparent face `face` at (x, y) over `behind`.
   Color blendedOver(int x, int y, int face, const Color& behind) const;
   const Color& background() const { return background_; }
-  void addCost(int x, int y, float work) override { cost_->at(x, y) += Color(work); }
+  void addCost(int x, int y, float work) override {
+    if (cost_) cost_->at(x, y) += Color(work);
+  }
 
   StepRecorder* steps() const override { return steps_; }
   // The shadow volumes the algorithm is to count, or nullptr.
@@ -71,7 +73,7 @@ class RasterFrame final : public VisibleFaces {
   RenderResult result_;
   Image* depth_ = nullptr;  // or none, where not wanted
   Image* normal_ = nullptr;
-  Image* cost_;
+  Image* cost_ = nullptr;
   // The scene face seen at each pixel, or -1: the "face" buffer, where
   // wanted, and the pixels covered.
   std::vector<int> faces_;

@@ -145,7 +145,7 @@ RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSett
 // so that the reconstruction filter weighs them as it weighs the ray
 // tracers' samples. The scene is tessellated again only when a pass's time
 // differs from the last. The auxiliary buffers are the first pass's, but
-// "cost", which adds up over the passes, as do the counters.
+// "cost", which adds up over the passes where it is wanted, as do the counters.
 RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
                             RenderObserver& observer, const PassRenderer& renderPass) {
   const std::vector<AccumulationPass> passes = accumulationPasses(scene.camera, settings);
@@ -166,10 +166,11 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
       continue;
     }
     accumulated.stats.accumulate(result.stats);
-    Image& cost = accumulated.buffers.at("cost");
-    const Image& passCost = result.buffers.at("cost");
-    for (int y = 0; y < settings.height; ++y)
-      for (int x = 0; x < settings.width; ++x) cost.at(x, y) += passCost.at(x, y);
+    if (Image* cost = accumulated.buffer("cost")) {
+      const Image& passCost = result.buffers.at("cost");
+      for (int y = 0; y < settings.height; ++y)
+        for (int x = 0; x < settings.width; ++x) cost->at(x, y) += passCost.at(x, y);
+    }
   }
   accumulated.image = film.resolve(workers);
   // A frame is drawn whole, each polygon at once: a region is cut from it.

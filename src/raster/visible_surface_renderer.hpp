@@ -64,7 +64,7 @@ std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
                                                  const RenderSettings& settings);
 
 // Renders one pass, of the scene tessellated at the pass's time: the image
-// with its auxiliary buffers, "cost" among them, and the counters.
+// with the auxiliary buffers the settings want, and the counters.
 using PassRenderer = std::function<RenderResult(
     const TessellatedScene& tessellated, const AccumulationPass& pass, RenderObserver& observer)>;
 

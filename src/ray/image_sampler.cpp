@@ -23,13 +23,13 @@ TileTrace::TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers
       steps_(observer.stepRecorder()),
       depth_(buffers.buffer("depth")),
       normal_(buffers.buffer("normal")),
-      cost_(buffers.buffers.at("cost")) {}
+      cost_(buffers.buffer("cost")) {}
 
 void TileTrace::recordBuffers(const glm::ivec2& pixel, const SampleResult& shown,
                               std::uint64_t tests) {
   if (depth_) depth_->at(pixel.x, pixel.y) = Color(shown.depth);
   if (normal_) normal_->at(pixel.x, pixel.y) = shown.normal;
-  cost_.at(pixel.x, pixel.y) = Color(static_cast<float>(tests));
+  if (cost_) cost_->at(pixel.x, pixel.y) = Color(static_cast<float>(tests));
 }
 
 namespace {
@@ -59,7 +59,7 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
     result.buffers["depth"] = Image(settings.width, settings.height, Color(kInfinity));
   if (settings.wantsBuffer("normal"))
     result.buffers["normal"] = Image(settings.width, settings.height);
-  result.buffers["cost"] = Image(settings.width, settings.height);
+  if (settings.wantsBuffer("cost")) result.buffers["cost"] = Image(settings.width, settings.height);
   Film film(settings.width, settings.height, settings.sampling.filter);
 
   StepRecorder* const steps = observer.stepRecorder();

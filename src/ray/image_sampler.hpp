@@ -64,7 +64,7 @@ class TileTrace {
   StepRecorder* steps_;
   Image* depth_;  // or none, where not wanted
   Image* normal_;
-  Image& cost_;
+  Image* cost_;
 };
 
 // Renders the image by calling traceTile for every tile, on the workers, and

@@ -80,10 +80,9 @@ struct RenderSettings {
   std::optional<PixelRect> region;
 
   // The auxiliary buffers to fill beside the image ("depth", "normal",
-  // "face"): every one the algorithm has, or only those named, for a front
-  // end that writes a few and need not pay for the others. The "cost"
-  // buffer, which the accumulation passes add up, and the shadow map are
-  // always there.
+  // "face", "cost"): every one the algorithm has, or only those named, for a
+  // front end that writes a few and need not pay for the others. The shadow
+  // map, a picture of the maps made anyway, is always there.
   std::optional<std::vector<std::string>> buffers;
 
   // The pixels rendered: the region, or the whole image.
