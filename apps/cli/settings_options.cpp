@@ -5,8 +5,10 @@
 #include <cstdint>
 #include <iostream>
 #include <limits>
+#include <ranges>
 
 #include "io/scene_file.hpp"
+#include "job.hpp"
 #include "render/render_limits.hpp"
 
 namespace rise::cli {
@@ -16,11 +18,7 @@ namespace {
 // names there are: "--accel: bhv; expected one of bvh, embree, none, spheres".
 template <typename Enum>
 CLI::Validator choices(std::map<std::string, Enum> names) {
-  std::string expected;
-  for (const auto& [name, value] : names) {
-    if (!expected.empty()) expected += ", ";
-    expected += name;
-  }
+  const std::string expected = joined(std::views::keys(names));
   const CLI::CheckedTransformer named(std::move(names), CLI::ignore_case);
   return CLI::Validator(
       [named, expected](std::string& text) -> std::string {

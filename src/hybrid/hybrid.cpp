@@ -96,9 +96,12 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // (visible_surface_renderer.hpp).
 RenderResult blankResult(const RenderSettings& settings, bool whatWasHit) {
   RenderResult result{Image(settings.width, settings.height), {}, {}};
-  for (const char* name : {"cost", "depth", "normal", "face"})
-    if (settings.wantsBuffer(name) && (whatWasHit || name == std::string_view("cost")))
-      result.buffers.emplace(name, Image(settings.width, settings.height));
+  if (settings.wantsBuffer("cost"))
+    result.buffers.emplace("cost", Image(settings.width, settings.height));
+  if (whatWasHit)
+    for (const char* name : {"depth", "normal", "face"})
+      if (settings.wantsBuffer(name))
+        result.buffers.emplace(name, Image(settings.width, settings.height));
   return result;
 }
 
