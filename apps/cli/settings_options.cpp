@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <iostream>
 #include <limits>
-#include <ranges>
+#include <vector>
 
 #include "io/scene_file.hpp"
 #include "job.hpp"
@@ -18,7 +18,9 @@ namespace {
 // names there are: "--accel: bhv; expected one of bvh, embree, none, spheres".
 template <typename Enum>
 CLI::Validator choices(std::map<std::string, Enum> names) {
-  const std::string expected = joined(std::views::keys(names));
+  std::vector<std::string> nameList;
+  for (const auto& entry : names) nameList.push_back(entry.first);
+  const std::string expected = joined(nameList);
   const CLI::CheckedTransformer named(std::move(names), CLI::ignore_case);
   return CLI::Validator(
       [named, expected](std::string& text) -> std::string {
