@@ -1,3 +1,7 @@
+#include "core/memory_reuse.hpp"
 #include "run.hpp"
 
-int main(int argc, char** argv) { return rise::cli::run(argc, argv); }
+int main(int argc, char** argv) {
+  rise::keepFreedMemoryForReuse();
+  return rise::cli::run(argc, argv);
+}

@@ -169,7 +169,7 @@ void Viewport::rebuild(const Scene& scene) {
   settings.level = kPreviewTessellation;
   settings.planeSize = kPreviewPlaneSize;
   settings.viewpoint = scene.camera.lookAt;
-  const TessellatedScene tessellated = tessellateScene(scene, settings);
+  const TessellatedScene tessellated = tessellateScene(scene, settings, Workers(0));
   std::vector<Vertex> vertices;
   shapeVertices_.assign(scene.shapes.size(), {0, 0});
   for (const SceneFace& face : tessellated.faces) {

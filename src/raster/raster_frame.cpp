@@ -35,9 +35,10 @@ RasterFrame::RasterFrame(const RenderSettings& settings, const Color& background
 
 ShadedPixel RasterFrame::shadeAt(int x, int y, int face) const {
   const Vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-  if (!shadowVolumes_ || isTransparent(face)) return shader_.shade(face, centre);
+  const PixelGeometry geometry = depth_ || normal_ ? PixelGeometry::Wanted : PixelGeometry::Skipped;
+  if (!shadowVolumes_ || isTransparent(face)) return shader_.shade(face, centre, nullptr, geometry);
   const PixelShadows shadows = shadowVolumes_->at(x, y);
-  return shader_.shade(face, centre, shadows.any() ? &shadows : nullptr);
+  return shader_.shade(face, centre, shadows.any() ? &shadows : nullptr, geometry);
 }
 
 void RasterFrame::setVisible(int x, int y, int face) {

@@ -34,7 +34,7 @@ class RasterFrame final : public VisibleFaces {
   // pixel shows: its own light, plus what is behind filtered by its
   // transmission times its colour (raster/transparency.hpp).
   void blendVisible(int x, int y, int face);
-  bool isTransparent(int face) const { return shader_.materialOf(face).isTransparent(); }
+  bool isTransparent(int face) const { return shader_.isTransparent(face); }
   // The colour of transparent face `face` at (x, y) over `behind`.
   Color blendedOver(int x, int y, int face, const Color& behind) const;
   const Color& background() const { return background_; }

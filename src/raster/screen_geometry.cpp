@@ -1,5 +1,7 @@
 #include "raster/screen_geometry.hpp"
 
+#include <algorithm>
+
 #include "raster/polygon_clipping.hpp"
 
 namespace rise {
@@ -73,6 +75,12 @@ class FaceProjector {
 
   void projectFaces(int begin, int end, ScreenGeometry& out) const {
     std::vector<Vec3> polygon, kept, cutOff;
+    // Room for every face as a triangle: a part is written once, not moved
+    // as it grows.
+    const auto faces = static_cast<std::size_t>(end - begin);
+    out.faces.reserve(faces);
+    out.polygons.reserve(faces);
+    out.corners.reserve(3 * faces);
     for (int f = begin; f < end; ++f) {
       ++out.counters.polygonsIn;
       const SceneFace& face = scene_.faces[f];
@@ -124,20 +132,47 @@ class FaceProjector {
   std::vector<ViewedVertex> viewed_;
 };
 
-void append(ScreenGeometry& all, const ScreenGeometry& part) {
-  const int faceOffset = static_cast<int>(all.faces.size());
-  const int cornerOffset = static_cast<int>(all.corners.size());
-  all.faces.insert(all.faces.end(), part.faces.begin(), part.faces.end());
-  all.corners.insert(all.corners.end(), part.corners.begin(), part.corners.end());
-  for (ScreenPolygon polygon : part.polygons) {
-    polygon.face += faceOffset;
-    polygon.firstCorner += cornerOffset;
-    all.polygons.push_back(polygon);
+// Where each part's items start in the whole, and (last) how many there are
+// in all.
+template <typename Count>
+std::vector<std::size_t> startsOf(const std::vector<ScreenGeometry>& parts, const Count& count) {
+  std::vector<std::size_t> starts(parts.size() + 1, 0);
+  for (std::size_t part = 0; part < parts.size(); ++part)
+    starts[part + 1] = starts[part] + count(parts[part]);
+  return starts;
+}
+
+// The parts one after the other, as if one range had made them all; each
+// part is copied on a thread, into its place.
+ScreenGeometry joined(const std::vector<ScreenGeometry>& parts, const Workers& workers) {
+  const std::vector<std::size_t> faceStarts =
+      startsOf(parts, [](const ScreenGeometry& part) { return part.faces.size(); });
+  const std::vector<std::size_t> polygonStarts =
+      startsOf(parts, [](const ScreenGeometry& part) { return part.polygons.size(); });
+  const std::vector<std::size_t> cornerStarts =
+      startsOf(parts, [](const ScreenGeometry& part) { return part.corners.size(); });
+  ScreenGeometry all;
+  all.faces.resize(faceStarts.back());
+  all.polygons.resize(polygonStarts.back());
+  all.corners.resize(cornerStarts.back());
+  workers.forEachRange(static_cast<int>(parts.size()), 1, [&](int index, int, int) {
+    const ScreenGeometry& part = parts[index];
+    std::copy(part.faces.begin(), part.faces.end(), all.faces.begin() + faceStarts[index]);
+    std::copy(part.corners.begin(), part.corners.end(), all.corners.begin() + cornerStarts[index]);
+    std::transform(part.polygons.begin(), part.polygons.end(),
+                   all.polygons.begin() + polygonStarts[index], [&](ScreenPolygon polygon) {
+                     polygon.face += static_cast<int>(faceStarts[index]);
+                     polygon.firstCorner += static_cast<int>(cornerStarts[index]);
+                     return polygon;
+                   });
+  });
+  for (const ScreenGeometry& part : parts) {
+    all.counters.polygonsIn += part.counters.polygonsIn;
+    all.counters.culled += part.counters.culled;
+    all.counters.outside += part.counters.outside;
+    all.counters.clipped += part.counters.clipped;
   }
-  all.counters.polygonsIn += part.counters.polygonsIn;
-  all.counters.culled += part.counters.culled;
-  all.counters.outside += part.counters.outside;
-  all.counters.clipped += part.counters.clipped;
+  return all;
 }
 
 }  // namespace
@@ -173,17 +208,7 @@ ScreenGeometry projectScene(const TessellatedScene& scene, const ViewProjection&
   workers.forEachRange(faceCount, kFacesPerRange, [&](int range, int begin, int end) {
     projector.projectFaces(begin, end, parts[range]);
   });
-  ScreenGeometry screen;
-  std::size_t faces = 0, corners = 0;
-  for (const ScreenGeometry& part : parts) {
-    faces += part.faces.size();
-    corners += part.corners.size();
-  }
-  screen.faces.reserve(faces);
-  screen.polygons.reserve(faces);
-  screen.corners.reserve(corners);
-  for (const ScreenGeometry& part : parts) append(screen, part);
-  return screen;
+  return joined(parts, workers);
 }
 
 }  // namespace rise

@@ -1,5 +1,7 @@
 #include "raster/surface_shader.hpp"
 
+#include <algorithm>
+
 #include "scene/shapes/vertex_attributes.hpp"
 #include "scene/textures/surface_mapping.hpp"
 
@@ -42,6 +44,9 @@ SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessell
       screen_(screen),
       eye_(view.eye()),
       shading_(shading),
+      anyTransparent_(
+          std::any_of(scene.materials.begin(), scene.materials.end(),
+                      [](const Material& material) { return material.isTransparent(); })),
       shadows_(shadows) {
   if (shading_ == Shading::Flat) lightFaces(workers);
   if (shading_ == Shading::Gouraud) lightVertices(workers);
@@ -118,11 +123,8 @@ PixelFootprint SurfaceShader::uvFootprint(int face, const Vec2& centre,
   return {stepTo(centre + Vec2(1.0f, 0.0f)), stepTo(centre + Vec2(0.0f, 1.0f))};
 }
 
-ShadedPixel SurfaceShader::shade(int face, const Vec2& centre,
-                                 const LightVisibility* pixelShadows) const {
-  const ScreenFace& screenFace = screen_.faces[face];
-  const SceneFace& sceneFace = tessellated_.faces[screenFace.sceneFace];
-  const Vec3 weights = screenFace.barycentricAt(centre);
+SurfacePoint SurfaceShader::surfaceAt(int face, const Vec3& weights) const {
+  const SceneFace& sceneFace = tessellated_.faces[screen_.faces[face].sceneFace];
   const SurfaceVertex& a = tessellated_.vertices[sceneFace.vertices[0]];
   const SurfaceVertex& b = tessellated_.vertices[sceneFace.vertices[1]];
   const SurfaceVertex& c = tessellated_.vertices[sceneFace.vertices[2]];
@@ -130,16 +132,31 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre,
                        interpolatedNormal(planeNormal(a, b, c), a.normal, b.normal, c.normal,
                                           Vec2(weights.y, weights.z)),
                        weights.x * a.uv + weights.y * b.uv + weights.z * c.uv);
-
   const std::optional<PlacedProjection>& projection = tessellated_.projections[sceneFace.shape];
   if (projection) projection->mapOnto(surface);
+  return surface;
+}
 
+ShadedPixel SurfaceShader::shade(int face, const Vec2& centre, const LightVisibility* pixelShadows,
+                                 PixelGeometry geometry) const {
+  const ScreenFace& screenFace = screen_.faces[face];
+  const SceneFace& sceneFace = tessellated_.faces[screenFace.sceneFace];
+  const Vec3 weights = screenFace.barycentricAt(centre);
+  const SurfaceVertex& a = tessellated_.vertices[sceneFace.vertices[0]];
+  const SurfaceVertex& b = tessellated_.vertices[sceneFace.vertices[1]];
+  const SurfaceVertex& c = tessellated_.vertices[sceneFace.vertices[2]];
   const Material& material = scene_.materials[sceneFace.material];
+  const bool textured = material.texture || material.ksTexture;
+  // Flat and Gouraud shading of an untextured material need no point of
+  // the surface, only its face or its corners' light.
+  const bool readsSurface =
+      geometry == PixelGeometry::Wanted || shading_ == Shading::Phong || textured;
+  SurfacePoint surface = readsSurface ? surfaceAt(face, weights) : SurfacePoint();
+
   // The footprint is found only where a texture is there to be averaged over it.
   const SurfaceColors colors =
-      material.texture || material.ksTexture
-          ? surfaceColors(material, surface, uvFootprint(face, centre, surface))
-          : surfaceColors(material, surface);
+      textured ? surfaceColors(material, surface, uvFootprint(face, centre, surface))
+               : surfaceColors(material, surface);
   const int side = sideSeen(screenFace);
   Color color;
   switch (shading_) {
@@ -164,7 +181,7 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre,
       // Bump and normal maps tilt the normal at every pixel, Phong shading
       // alone having a normal per pixel.
       if (material.bump || material.normalMap) {
-        if (!projection)
+        if (!tessellated_.projections[sceneFace.shape])
           triangleTangents(a.position, b.position, c.position, a.uv, b.uv, c.uv, surface.dpdu,
                            surface.dpdv);
         surface.shadingNormal = shadingNormal(material, surface);
@@ -174,6 +191,7 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre,
                          eye_, pixelShadows ? pixelShadows : shadows_);
       break;
   }
+  if (geometry == PixelGeometry::Skipped) return {color, 0.0f, Vec3(0.0f)};
   return {color, glm::length(surface.position - eye_), surface.normal};
 }
 

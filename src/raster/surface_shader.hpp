@@ -28,12 +28,17 @@
 namespace rise {
 
 // What is seen at a pixel: its colour, and for the auxiliary buffers the
-// distance from the eye and the surface's normal there.
+// distance from the eye and the surface's normal there (PixelGeometry).
 struct ShadedPixel {
   Color color;
   float depth;
   Vec3 normal;
 };
+
+// Whether a pixel's depth and normal are wanted; when skipped, they are
+// left zero, and flat and Gouraud shading of an untextured surface skip
+// finding the point of the surface altogether.
+enum class PixelGeometry { Wanted, Skipped };
 
 class SurfaceShader {
  public:
@@ -45,13 +50,19 @@ class SurfaceShader {
 
   // The screen face `face` seen at the raster point `centre`; with
   // `pixelShadows`, what reaches the point seen there from each light.
-  ShadedPixel shade(int face, const Vec2& centre,
-                    const LightVisibility* pixelShadows = nullptr) const;
+  ShadedPixel shade(int face, const Vec2& centre, const LightVisibility* pixelShadows = nullptr,
+                    PixelGeometry geometry = PixelGeometry::Wanted) const;
   const Material& materialOf(int face) const {
     return scene_.materials[tessellated_.faces[screen_.faces[face].sceneFace].material];
   }
+  // Whether screen face `face` lets light through; asked of every polygon
+  // drawn, and answered at once in a scene where nothing does.
+  bool isTransparent(int face) const { return anyTransparent_ && materialOf(face).isTransparent(); }
 
  private:
+  // The point of screen face `face` at barycentric coordinates `weights`,
+  // its texture coordinates by the shape's projection where it has one.
+  SurfacePoint surfaceAt(int face, const Vec3& weights) const;
   PixelFootprint uvFootprint(int face, const Vec2& centre, const SurfacePoint& surface) const;
   void lightFaces(const Workers& workers);
   void lightVertices(const Workers& workers);
@@ -63,6 +74,7 @@ class SurfaceShader {
   const ScreenGeometry& screen_;
   Vec3 eye_;
   Shading shading_;
+  bool anyTransparent_;
   const LightVisibility* shadows_;
   std::vector<SplitLight> faceLight_;  // flat: by screen face
   // Gouraud: by scene vertex, for each side of the surface seen (front:

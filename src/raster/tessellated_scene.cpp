@@ -26,34 +26,58 @@ Vec2 PlacedProjection::stepTo(const SurfacePoint& surface, const Vec3& position)
   return mapping_->step(surface.uv, mapping_->uvAt(object.position, object.normal));
 }
 
-TessellatedScene tessellateScene(const Scene& scene, const TessellationSettings& settings) {
+namespace {
+
+constexpr int kFacesPerRange = 16384;
+
+// The faces of one shape's triangles, in their order, from `firstFace` on;
+// its vertices start at `firstVertex`.
+void addFaces(const Scene& scene, int shape, const Tessellation& part, const Vec3& viewpoint,
+              int firstVertex, std::size_t firstFace, const Workers& workers,
+              TessellatedScene& tessellated) {
+  // An eye inside a solid's box may be inside the solid, where its back
+  // faces are the ones in view.
+  const bool cullable = part.enclosesSolid && !contains(scene.shapes[shape]->bounds(), viewpoint);
+  // A shape that wraps a mesh into one primitive (a moving mesh) is tested
+  // whole.
+  const bool onePrimitive = scene.shapes[shape]->primitiveCount() == 1;
+  const int material = scene.shapes[shape]->material();
+  workers.forEachRange(static_cast<int>(part.triangles.size()), kFacesPerRange,
+                       [&](int, int begin, int end) {
+                         for (int triangle = begin; triangle < end; ++triangle) {
+                           const auto& [a, b, c] = part.triangles[triangle];
+                           tessellated.faces[firstFace + triangle] = {
+                               {firstVertex + a, firstVertex + b, firstVertex + c},
+                               shape,
+                               onePrimitive ? 0 : part.primitives[triangle],
+                               material,
+                               cullable};
+                         }
+                       });
+}
+
+}  // namespace
+
+TessellatedScene tessellateScene(const Scene& scene, const TessellationSettings& settings,
+                                 const Workers& workers) {
   TessellatedScene tessellated;
   for (std::size_t shape = 0; shape < scene.shapes.size(); ++shape) {
     Tessellation part;
     scene.shapes[shape]->tessellate(settings, part);
-    // An eye inside a solid's box may be inside the solid, where its back
-    // faces are the ones in view.
-    const bool cullable =
-        part.enclosesSolid && !contains(scene.shapes[shape]->bounds(), settings.viewpoint);
     tessellated.projections.push_back(
         part.projection ? std::optional<PlacedProjection>(std::in_place, *part.projection,
                                                           part.projectionPlacement)
                         : std::nullopt);
-    // A shape that wraps a mesh into one primitive (a moving mesh) is
-    // tested whole.
-    const bool onePrimitive = scene.shapes[shape]->primitiveCount() == 1;
     const int firstVertex = static_cast<int>(tessellated.vertices.size());
-    tessellated.vertices.insert(tessellated.vertices.end(), part.vertices.begin(),
-                                part.vertices.end());
-    tessellated.faces.reserve(tessellated.faces.size() + part.triangles.size());
-    for (std::size_t triangle = 0; triangle < part.triangles.size(); ++triangle) {
-      const auto& [a, b, c] = part.triangles[triangle];
-      tessellated.faces.push_back({{firstVertex + a, firstVertex + b, firstVertex + c},
-                                   static_cast<int>(shape),
-                                   onePrimitive ? 0 : part.primitives[triangle],
-                                   scene.shapes[shape]->material(),
-                                   cullable});
-    }
+    if (tessellated.vertices.empty())
+      tessellated.vertices = std::move(part.vertices);
+    else
+      tessellated.vertices.insert(tessellated.vertices.end(), part.vertices.begin(),
+                                  part.vertices.end());
+    const std::size_t firstFace = tessellated.faces.size();
+    tessellated.faces.resize(firstFace + part.triangles.size());
+    addFaces(scene, static_cast<int>(shape), part, settings.viewpoint, firstVertex, firstFace,
+             workers, tessellated);
   }
   return tessellated;
 }

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "scene/scene.hpp"
 #include "scene/tessellation.hpp"
 #include "scene/textures/projected_mapping.hpp"
@@ -52,7 +53,8 @@ struct TessellatedScene {
 };
 
 // Tessellates every shape of the scene; planes become squares centred under
-// the camera.
-TessellatedScene tessellateScene(const Scene& scene, const TessellationSettings& settings);
+// the camera. The faces are filled on the workers.
+TessellatedScene tessellateScene(const Scene& scene, const TessellationSettings& settings,
+                                 const Workers& workers);
 
 }  // namespace rise

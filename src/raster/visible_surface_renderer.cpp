@@ -53,7 +53,7 @@ TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& s
   tessellation.planeSize = settings.planeSize;
   tessellation.viewpoint = scene.camera.position;
   tessellation.time = time;
-  return tessellateScene(scene, tessellation);
+  return tessellateScene(scene, tessellation, Workers(settings.threads));
 }
 
 // The accumulation buffer's passes: where in the pixel, where on the lens
