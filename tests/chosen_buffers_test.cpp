@@ -52,5 +52,31 @@ TEST(ChosenBuffers, OnlyThoseNamedAreMadeAndTheImageIsTheSame) {
   }
 }
 
+// Flat and Gouraud shading find no point of the surface where no texture
+// and no buffer needs one: every shading gives the same image whether the
+// depth and normal are wanted or not, on plain and on textured materials.
+TEST(ChosenBuffers, EveryShadingGivesTheSameImageWithoutTheDepthAndNormal) {
+  for (const char* file : {"classic.yaml", "textures.yaml"}) {
+    const Scene scene = loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/" + file);
+    RenderRequest request;
+    request.image.width = 37;
+    request.image.height = 29;
+    request.settings.threads = 2;
+    for (const Shading shading : {Shading::Flat, Shading::Gouraud, Shading::Phong}) {
+      RenderSettings all = settingsFor(scene, request);
+      all.shading = shading;
+      RenderSettings imageAlone = all;
+      imageAlone.buffers = std::vector<std::string>{};
+      for (const Renderer* renderer : allRenderers()) {
+        if (!renderer->description().reads(Option::Shading)) continue;
+        RenderObserver observer;
+        EXPECT_EQ(renderer->render(scene, imageAlone, observer).image.pixels(),
+                  renderer->render(scene, all, observer).image.pixels())
+            << renderer->name() << ", " << file << ", " << shadingName(shading);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rise
