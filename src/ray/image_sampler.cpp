@@ -87,11 +87,11 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
   TraceCounters counters;
   std::uint64_t refinedPixels = 0;
   for (const TileTrace& tile : tiles) {
-    film.merge(tile.film());
+    if (!film.tilesAreFinal()) film.merge(tile.film());
     counters += tile.counters;
     refinedPixels += tile.refinedPixels;
   }
-  result.image = film.resolve(workers);
+  result.image = film.tilesAreFinal() ? std::move(shown) : film.resolve(workers);
   cropToRegion(result, settings);
   counters.addTo(result.stats);
   result.stats.add("samples_per_pixel", settings.sampling.samples);

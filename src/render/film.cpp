@@ -26,6 +26,28 @@ float radiusOf(FilterKind kind) {
   return 0.5f;
 }
 
+// A sample a pixel takes, by the step from the pixel to the sample's, and
+// its weight there.
+struct Neighbour {
+  int dx, dy;
+  float weight;
+};
+
+// The samples a pixel takes when every sample lies at `offset` in its pixel:
+// the same weights everywhere, in the raster order in which
+// FilmTile::addSample would add them.
+std::vector<Neighbour> neighboursTaken(const ReconstructionFilter& filter, const Vec2& offset) {
+  std::vector<Neighbour> neighbours;
+  const int reach = static_cast<int>(std::ceil(filter.radius()));
+  for (int dy = -reach; dy <= reach; ++dy)
+    for (int dx = -reach; dx <= reach; ++dx) {
+      const float weight = filter.weight(Vec2(static_cast<float>(dx), static_cast<float>(dy)) +
+                                         (offset - Vec2(0.5f)));
+      if (weight != 0.0f) neighbours.push_back({dx, dy, weight});
+    }
+  return neighbours;
+}
+
 }  // namespace
 
 std::vector<PixelRect> makeTiles(int width, int height, int tileSize) {
@@ -57,12 +79,21 @@ float ReconstructionFilter::weight(const Vec2& offset) const {
   return weight1D(offset.x) * weight1D(offset.y);
 }
 
+bool ReconstructionFilter::keepsEachSampleInItsPixel(const Vec2& offset) const {
+  const std::vector<Neighbour> neighbours = neighboursTaken(*this, offset);
+  return neighbours.size() == 1 && neighbours[0].dx == 0 && neighbours[0].dy == 0 &&
+         neighbours[0].weight == 1.0f;
+}
+
 Film::Film(int width, int height, FilterKind filter)
-    : width_(width),
-      height_(height),
-      filter_(filter),
-      weightedSum_(static_cast<std::size_t>(width) * height, Color(0.0f)),
-      weightSum_(static_cast<std::size_t>(width) * height, 0.0f) {}
+    : width_(width), height_(height), filter_(filter) {}
+
+void Film::makeSums() {
+  if (!weightSum_.empty()) return;
+  const auto pixels = static_cast<std::size_t>(width_) * height_;
+  weightedSum_.assign(pixels, Color(0.0f));
+  weightSum_.assign(pixels, 0.0f);
+}
 
 FilmTile Film::tileFor(const PixelRect& tile) const {
   const int margin = static_cast<int>(std::ceil(filter_.radius() - 0.5f));
@@ -71,6 +102,7 @@ FilmTile Film::tileFor(const PixelRect& tile) const {
 }
 
 void Film::merge(const FilmTile& tile) {
+  makeSums();
   const int tileWidth = tile.x1_ - tile.x0_;
   for (int y = tile.y0_; y < tile.y1_; ++y) {
     for (int x = tile.x0_; x < tile.x1_; ++x) {
@@ -84,21 +116,8 @@ void Film::merge(const FilmTile& tile) {
 
 void Film::addImage(const Image& samples, const Vec2& offset, const Workers& workers) {
   assert(samples.width() == width_ && samples.height() == height_);
-  // The samples a pixel takes, by their step from it, in the raster order in
-  // which FilmTile::addSample would add them; the same weights everywhere,
-  // since every sample lies at the same offset in its pixel.
-  struct Neighbour {
-    int dx, dy;
-    float weight;
-  };
-  std::vector<Neighbour> neighbours;
-  const int reach = static_cast<int>(std::ceil(filter_.radius()));
-  for (int dy = -reach; dy <= reach; ++dy)
-    for (int dx = -reach; dx <= reach; ++dx) {
-      const float weight = filter_.weight(Vec2(static_cast<float>(dx), static_cast<float>(dy)) +
-                                          (offset - Vec2(0.5f)));
-      if (weight != 0.0f) neighbours.push_back({dx, dy, weight});
-    }
+  const std::vector<Neighbour> neighbours = neighboursTaken(filter_, offset);
+  makeSums();
   workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
     for (int y = firstRow; y < endRow; ++y)
       for (int x = 0; x < width_; ++x) {
@@ -115,6 +134,7 @@ void Film::addImage(const Image& samples, const Vec2& offset, const Workers& wor
 
 Image Film::resolve(const Workers& workers) const {
   Image image(width_, height_);
+  if (weightSum_.empty()) return image;
   workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
     for (int y = firstRow; y < endRow; ++y)
       for (int x = 0; x < width_; ++x) {

@@ -21,6 +21,10 @@ class ReconstructionFilter {
   FilterKind kind() const { return kind_; }
   float radius() const { return radius_; }
   float weight(const Vec2& offset) const;
+  // Whether a sample at `offset` from its pixel's top-left corner counts
+  // toward that pixel alone, with weight 1 (the box filter): then an image
+  // of such samples, one a pixel, is its own reconstruction.
+  bool keepsEachSampleInItsPixel(const Vec2& offset) const;
 
  private:
   float weight1D(float offset) const;
@@ -35,10 +39,16 @@ class FilmTile;
 // its samples' weighted colours and the sum of their weights. Threads add
 // samples to tiles of their own; the tiles are merged in tile order once
 // they are all done, so the sums, and the image, do not depend on the
-// number of threads.
+// number of threads. The sums are made when the first samples are added: a
+// render whose tiles are final (tilesAreFinal) never makes them.
 class Film {
  public:
   Film(int width, int height, FilterKind filter);
+
+  // Whether each tile resolves its pixels to their final colours
+  // (FilmTile::resolveInto): the filter takes no sample from beyond its
+  // pixel (the box), so no tile needs another's samples.
+  bool tilesAreFinal() const { return filter_.radius() <= 0.5f; }
 
   // An empty tile covering `tile`'s pixels and the margin its samples reach.
   FilmTile tileFor(const PixelRect& tile) const;
@@ -57,8 +67,10 @@ class Film {
  private:
   int width_;
   int height_;
+  void makeSums();
+
   ReconstructionFilter filter_;
-  std::vector<Color> weightedSum_;
+  std::vector<Color> weightedSum_;  // none until samples are added
   std::vector<float> weightSum_;
 };
 

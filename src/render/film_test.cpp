@@ -94,5 +94,38 @@ TEST(Film, AnImageAddedWholeEqualsItsSamplesAddedOneByOne) {
   }
 }
 
+// What lets a render skip the film: the box filter's samples stay in their
+// pixels, so each tile resolves to the final colours and one image of
+// samples, one a pixel, is its own reconstruction, to the bit.
+TEST(Film, BoxTilesAndLoneImagesAreTheirOwnReconstruction) {
+  const int width = 11, height = 7;
+  Image samples(width, height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      samples.at(x, y) = Color(0.1f * static_cast<float>(x), 1.0f / static_cast<float>(y + 3),
+                               0.7f * static_cast<float>(x * y % 5) + 0.013f);
+  for (const Vec2& offset : {Vec2(0.5f), Vec2(0.0f), Vec2(0.999f, 0.31f)}) {
+    for (FilterKind filter : {FilterKind::Box, FilterKind::Tent, FilterKind::Gaussian}) {
+      const bool box = filter == FilterKind::Box;
+      // The tent weighs a sample at the pixel's centre 1 there and 0 at
+      // its neighbours.
+      const bool alone = box || (filter == FilterKind::Tent && offset == Vec2(0.5f));
+      EXPECT_EQ(ReconstructionFilter(filter).keepsEachSampleInItsPixel(offset), alone)
+          << toString(filter) << " at " << offset.x << ", " << offset.y;
+      Film film(width, height, filter);
+      EXPECT_EQ(film.tilesAreFinal(), box);
+      if (!box) continue;
+      FilmTile tile = film.tileFor({0, 0, width, height});
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) tile.addSample({x, y}, offset, samples.at(x, y));
+      Image fromTile(width, height);
+      tile.resolveInto(fromTile, {0, 0, width, height});
+      film.addImage(samples, offset, Workers(2));
+      EXPECT_EQ(film.resolve(Workers(2)).pixels(), samples.pixels());
+      EXPECT_EQ(fromTile.pixels(), samples.pixels());
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rise
