@@ -53,6 +53,27 @@ ScreenFace setUpFace(const ViewProjection& view, int sceneFace, bool frontFacing
   return face;
 }
 
+// A face the view keeps, as the first sweep over the faces found it: its
+// corners are its vertices' projections or, where the view volume cut it, a
+// polygon of its range's own.
+struct KeptFace {
+  int face;          // into TessellatedScene::faces
+  int clippedFirst;  // its first corner in KeptFaces::clippedCorners, or -1: not clipped
+  int cornerCount;
+  bool frontFacing;
+};
+
+// The faces of one range of them that the view keeps, in order.
+struct KeptFaces {
+  std::vector<KeptFace> faces;
+  std::vector<Vec3> clippedCorners;  // projected
+  std::size_t corners = 0;
+  ProjectionCounters counters;
+};
+
+// The pipeline in two sweeps over ranges of faces on the workers: the first
+// finds the faces kept (culling and clipping), so that the second can write
+// each where it goes in the whole, once.
 class FaceProjector {
  public:
   FaceProjector(const TessellatedScene& scene, const ViewProjection& view, bool backfaceCulling)
@@ -73,14 +94,9 @@ class FaceProjector {
     }
   }
 
-  void projectFaces(int begin, int end, ScreenGeometry& out) const {
+  void findKept(int begin, int end, KeptFaces& out) const {
     std::vector<Vec3> polygon, kept, cutOff;
-    // Room for every face as a triangle: a part is written once, not moved
-    // as it grows.
-    const auto faces = static_cast<std::size_t>(end - begin);
-    out.faces.reserve(faces);
-    out.polygons.reserve(faces);
-    out.corners.reserve(3 * faces);
+    out.faces.reserve(static_cast<std::size_t>(end - begin));
     for (int f = begin; f < end; ++f) {
       ++out.counters.polygonsIn;
       const SceneFace& face = scene_.faces[f];
@@ -102,9 +118,8 @@ class FaceProjector {
         continue;
       }
       const unsigned crossed = a.outside | b.outside | c.outside;
-      if (crossed == 0) {
-        polygon = {a.screen, b.screen, c.screen};
-      } else {
+      KeptFace keptFace{f, -1, 3, awayFromEye < 0.0f};
+      if (crossed != 0) {
         polygon.assign(camera.begin(), camera.end());
         for (std::size_t plane = 0; plane < volume_.size() && !polygon.empty(); ++plane) {
           if ((crossed & (1u << plane)) == 0) continue;
@@ -116,15 +131,42 @@ class FaceProjector {
           continue;
         }
         ++out.counters.clipped;
-        for (Vec3& corner : polygon) corner = project(view_, corner);
+        keptFace.clippedFirst = static_cast<int>(out.clippedCorners.size());
+        keptFace.cornerCount = static_cast<int>(polygon.size());
+        for (const Vec3& corner : polygon) out.clippedCorners.push_back(project(view_, corner));
       }
-      const int screenFace = static_cast<int>(out.faces.size());
-      out.faces.push_back(setUpFace(view_, f, awayFromEye < 0.0f, camera, Vec2(polygon[0])));
-      out.addPolygon(screenFace, polygon);
+      out.faces.push_back(keptFace);
+      out.corners += static_cast<std::size_t>(keptFace.cornerCount);
+    }
+  }
+
+  // Writes the range's kept faces, their polygons and corners into `screen`
+  // from face (and polygon) `firstFace` and corner `firstCorner` on.
+  void writeKept(const KeptFaces& range, std::size_t firstFace, std::size_t firstCorner,
+                 ScreenGeometry& screen) const {
+    for (std::size_t i = 0; i < range.faces.size(); ++i) {
+      const KeptFace& kept = range.faces[i];
+      const SceneFace& face = scene_.faces[kept.face];
+      const std::array<Vec3, 3> projected{viewed_[face.vertices[0]].screen,
+                                          viewed_[face.vertices[1]].screen,
+                                          viewed_[face.vertices[2]].screen};
+      const Vec3* corners =
+          kept.clippedFirst < 0 ? projected.data() : &range.clippedCorners[kept.clippedFirst];
+      const auto index = static_cast<int>(firstFace + i);
+      screen.faces[index] =
+          setUpFace(view_, kept.face, kept.frontFacing, cameraCorners(face), Vec2(corners[0]));
+      screen.polygons[index] = {index, static_cast<int>(firstCorner), kept.cornerCount};
+      std::copy(corners, corners + kept.cornerCount, screen.corners.begin() + firstCorner);
+      firstCorner += static_cast<std::size_t>(kept.cornerCount);
     }
   }
 
  private:
+  std::array<Vec3, 3> cameraCorners(const SceneFace& face) const {
+    return {viewed_[face.vertices[0]].camera, viewed_[face.vertices[1]].camera,
+            viewed_[face.vertices[2]].camera};
+  }
+
   const TessellatedScene& scene_;
   const ViewProjection& view_;
   std::array<glm::vec4, 5> volume_;
@@ -132,47 +174,27 @@ class FaceProjector {
   std::vector<ViewedVertex> viewed_;
 };
 
-// Where each part's items start in the whole, and (last) how many there are
-// in all.
-template <typename Count>
-std::vector<std::size_t> startsOf(const std::vector<ScreenGeometry>& parts, const Count& count) {
-  std::vector<std::size_t> starts(parts.size() + 1, 0);
-  for (std::size_t part = 0; part < parts.size(); ++part)
-    starts[part + 1] = starts[part] + count(parts[part]);
-  return starts;
-}
-
-// The parts one after the other, as if one range had made them all; each
-// part is copied on a thread, into its place.
-ScreenGeometry joined(const std::vector<ScreenGeometry>& parts, const Workers& workers) {
-  const std::vector<std::size_t> faceStarts =
-      startsOf(parts, [](const ScreenGeometry& part) { return part.faces.size(); });
-  const std::vector<std::size_t> polygonStarts =
-      startsOf(parts, [](const ScreenGeometry& part) { return part.polygons.size(); });
-  const std::vector<std::size_t> cornerStarts =
-      startsOf(parts, [](const ScreenGeometry& part) { return part.corners.size(); });
-  ScreenGeometry all;
-  all.faces.resize(faceStarts.back());
-  all.polygons.resize(polygonStarts.back());
-  all.corners.resize(cornerStarts.back());
-  workers.forEachRange(static_cast<int>(parts.size()), 1, [&](int index, int, int) {
-    const ScreenGeometry& part = parts[index];
-    std::copy(part.faces.begin(), part.faces.end(), all.faces.begin() + faceStarts[index]);
-    std::copy(part.corners.begin(), part.corners.end(), all.corners.begin() + cornerStarts[index]);
-    std::transform(part.polygons.begin(), part.polygons.end(),
-                   all.polygons.begin() + polygonStarts[index], [&](ScreenPolygon polygon) {
-                     polygon.face += static_cast<int>(faceStarts[index]);
-                     polygon.firstCorner += static_cast<int>(cornerStarts[index]);
-                     return polygon;
-                   });
-  });
-  for (const ScreenGeometry& part : parts) {
-    all.counters.polygonsIn += part.counters.polygonsIn;
-    all.counters.culled += part.counters.culled;
-    all.counters.outside += part.counters.outside;
-    all.counters.clipped += part.counters.clipped;
+// The ranges' kept faces, one after the other, each range written on a
+// thread into its place.
+ScreenGeometry written(const FaceProjector& projector, const std::vector<KeptFaces>& ranges,
+                       const Workers& workers) {
+  std::vector<std::size_t> faceStarts{0}, cornerStarts{0};
+  ScreenGeometry screen;
+  for (const KeptFaces& range : ranges) {
+    faceStarts.push_back(faceStarts.back() + range.faces.size());
+    cornerStarts.push_back(cornerStarts.back() + range.corners);
+    screen.counters.polygonsIn += range.counters.polygonsIn;
+    screen.counters.culled += range.counters.culled;
+    screen.counters.outside += range.counters.outside;
+    screen.counters.clipped += range.counters.clipped;
   }
-  return all;
+  screen.faces.resize(faceStarts.back());
+  screen.polygons.resize(faceStarts.back());
+  screen.corners.resize(cornerStarts.back());
+  workers.forEachRange(static_cast<int>(ranges.size()), 1, [&](int range, int, int) {
+    projector.writeKept(ranges[range], faceStarts[range], cornerStarts[range], screen);
+  });
+  return screen;
 }
 
 }  // namespace
@@ -204,11 +226,11 @@ ScreenGeometry projectScene(const TessellatedScene& scene, const ViewProjection&
                        [&](int, int begin, int end) { projector.viewVertices(begin, end); });
 
   const int faceCount = static_cast<int>(scene.faces.size());
-  std::vector<ScreenGeometry> parts(Workers::rangeCount(faceCount, kFacesPerRange));
+  std::vector<KeptFaces> ranges(Workers::rangeCount(faceCount, kFacesPerRange));
   workers.forEachRange(faceCount, kFacesPerRange, [&](int range, int begin, int end) {
-    projector.projectFaces(begin, end, parts[range]);
+    projector.findKept(begin, end, ranges[range]);
   });
-  return joined(parts, workers);
+  return written(projector, ranges, workers);
 }
 
 }  // namespace rise
