@@ -101,17 +101,29 @@ Step polygonDrawn(const ScreenGeometry& screen, int index, const RasterFrame& fr
   return step;
 }
 
+// What drawing a band works with: the buffer, the frame, the band's
+// counters, and the fill rule's edges, taken afresh for each polygon in the
+// memory of the last.
+struct BandDrawing {
+  const PixelRect& band;
+  ZBuffer& buffer;
+  RasterFrame& frame;
+  ZBufferCounters& counters;
+  PolygonCoverage coverage{};
+};
+
 // Calls test(x, y, w) at each pixel centre of the band that polygon `index`
 // covers, with its inverse depth there: a depth test, counted and charged to
 // the pixel.
 template <typename Test>
-void testDepths(const ScreenGeometry& screen, const PixelRect& band, int index, RasterFrame& frame,
-                ZBufferCounters& counters, const Test& test) {
+void testDepths(const ScreenGeometry& screen, int index, BandDrawing& drawing, const Test& test) {
   const ScreenPolygon& polygon = screen.polygons[index];
   const ScreenFace& face = screen.faces[polygon.face];
-  PolygonCoverage coverage;
+  PolygonCoverage& coverage = drawing.coverage;
+  RasterFrame& frame = drawing.frame;
+  ZBufferCounters& counters = drawing.counters;
   coverage.reset(screen.cornersOf(polygon));
-  coverage.forEachPixel(band, [&](int x, int y) {
+  coverage.forEachPixel(drawing.band, [&](int x, int y) {
     ++counters.depthTests;
     frame.addCost(x, y, 1.0f);
     test(x, y,
@@ -122,30 +134,31 @@ void testDepths(const ScreenGeometry& screen, const PixelRect& band, int index, 
 // Draws opaque polygon `index` into the buffer; calls taken(x, y, w) at each
 // pixel it takes.
 template <typename Taken>
-void drawOpaque(const ScreenGeometry& screen, const PixelRect& band, int index, ZBuffer& buffer,
-                RasterFrame& frame, ZBufferCounters& counters, const Taken& taken) {
+void drawOpaque(const ScreenGeometry& screen, int index, BandDrawing& drawing, const Taken& taken) {
   const int face = screen.polygons[index].face;
+  ZBuffer& buffer = drawing.buffer;
+  RasterFrame& frame = drawing.frame;
   std::optional<Step> step;
   if (frame.steps()) step = polygonDrawn(screen, index, frame);
-  testDepths(screen, band, index, frame, counters, [&](int x, int y, float inverseDepth) {
+  testDepths(screen, index, drawing, [&](int x, int y, float inverseDepth) {
     const std::size_t pixel = buffer.index(x, y);
     const bool nearer = inverseDepth > buffer.inverseDepth[pixel];
     if (step) step->writes.push_back(frame.writeOf(x, y, face, inverseDepth, nearer));
     if (!nearer) return;
     buffer.inverseDepth[pixel] = inverseDepth;
     buffer.face[pixel] = face;
-    ++counters.pixelsWritten;
+    ++drawing.counters.pixelsWritten;
     taken(x, y, inverseDepth);
   });
-  if (step) frame.steps()->record(std::move(*step), index, band.y0);
+  if (step) frame.steps()->record(std::move(*step), index, drawing.band.y0);
 }
 
 // The transparent polygons, back to front, each blended where it lies in
 // front of the opaque surface the buffer holds; `stepOf` numbers their
 // steps, after the opaque polygons'.
-void blendTransparent(const ScreenGeometry& screen, const PixelRect& band,
-                      std::span<const int> polygons, std::span<const std::int64_t> stepOf,
-                      const ZBuffer& buffer, RasterFrame& frame, ZBufferCounters& counters) {
+void blendTransparent(const ScreenGeometry& screen, std::span<const int> polygons,
+                      std::span<const std::int64_t> stepOf, BandDrawing& drawing) {
+  RasterFrame& frame = drawing.frame;
   StepRecorder* const steps = frame.steps();
   for (int index : transparentBackToFront(screen, frame, polygons)) {
     const int face = screen.polygons[index].face;
@@ -156,18 +169,18 @@ void blendTransparent(const ScreenGeometry& screen, const PixelRect& band,
           "; transparent, it is blended over what is behind it, back to front after the "
           "opaque polygons, and leaves the depth buffer as it is";
     }
-    testDepths(screen, band, index, frame, counters, [&](int x, int y, float inverseDepth) {
-      const bool inFront = inverseDepth > buffer.inverseDepth[buffer.index(x, y)];
+    testDepths(screen, index, drawing, [&](int x, int y, float inverseDepth) {
+      const bool inFront = inverseDepth > drawing.buffer.inverseDepth[drawing.buffer.index(x, y)];
       if (inFront) {
         frame.blendVisible(x, y, face);
-        ++counters.blends;
+        ++drawing.counters.blends;
       }
       if (!step) return;
       // What the pixel shows is the blend.
       step->writes.push_back(frame.writeOf(x, y, face, inverseDepth, inFront));
       if (inFront) step->writes.back().color = frame.image().at(x, y);
     });
-    if (step) steps->record(std::move(*step), stepOf[index], band.y0);
+    if (step) steps->record(std::move(*step), stepOf[index], drawing.band.y0);
   }
 }
 
@@ -178,23 +191,22 @@ void showOpaque(const PixelRect& band, const ZBuffer& buffer, RasterFrame& frame
 }
 
 // The opaque polygons first, then the transparent ones sorted back to front.
-void drawBandSorted(const ScreenGeometry& screen, const PixelRect& band,
-                    std::span<const int> polygons, std::span<const std::int64_t> blendStepOf,
-                    ZBuffer& buffer, RasterFrame& frame, ZBufferCounters& counters) {
-  buffer.clear(band);
+void drawBandSorted(const ScreenGeometry& screen, std::span<const int> polygons,
+                    std::span<const std::int64_t> blendStepOf, BandDrawing& drawing) {
+  drawing.buffer.clear(drawing.band);
   for (int index : polygons)
-    if (!frame.isTransparent(screen.polygons[index].face))
-      drawOpaque(screen, band, index, buffer, frame, counters, [](int, int, float) {});
-  showOpaque(band, buffer, frame);
-  blendTransparent(screen, band, polygons, blendStepOf, buffer, frame, counters);
+    if (!drawing.frame.isTransparent(screen.polygons[index].face))
+      drawOpaque(screen, index, drawing, [](int, int, float) {});
+  showOpaque(drawing.band, drawing.buffer, drawing.frame);
+  blendTransparent(screen, polygons, blendStepOf, drawing);
 }
 
 // Adds transparent polygon `index` to the fragment lists of the pixels where
 // it lies in front of the opaque surface the buffer holds so far.
-void addFragments(const ScreenGeometry& screen, const PixelRect& band, int index,
-                  const ZBuffer& buffer, ABuffer& fragments, RasterFrame& frame,
-                  ZBufferCounters& counters) {
+void addFragments(const ScreenGeometry& screen, int index, ABuffer& fragments,
+                  BandDrawing& drawing) {
   const int face = screen.polygons[index].face;
+  RasterFrame& frame = drawing.frame;
   std::optional<Step> step;
   if (frame.steps()) {
     step = polygonDrawn(screen, index, frame);
@@ -203,12 +215,12 @@ void addFragments(const ScreenGeometry& screen, const PixelRect& band, int index
         "), transparent: it joins the fragment list of each pixel it covers in front of the "
         "opaque surface in the buffer, to be blended by depth when every polygon is drawn";
   }
-  testDepths(screen, band, index, frame, counters, [&](int x, int y, float inverseDepth) {
-    const bool added =
-        fragments.add(x, y, inverseDepth, face, buffer.inverseDepth[buffer.index(x, y)]);
+  testDepths(screen, index, drawing, [&](int x, int y, float inverseDepth) {
+    const bool added = fragments.add(x, y, inverseDepth, face,
+                                     drawing.buffer.inverseDepth[drawing.buffer.index(x, y)]);
     if (step) step->writes.push_back(frame.writeOf(x, y, face, inverseDepth, added));
   });
-  if (step) frame.steps()->record(std::move(*step), index, band.y0);
+  if (step) frame.steps()->record(std::move(*step), index, drawing.band.y0);
 }
 
 // Every pixel of the band, its fragments blended over its opaque face by
@@ -239,21 +251,21 @@ void resolveFragments(const PixelRect& band, const ZBuffer& buffer, ABuffer& fra
 
 // Carpenter's A-buffer (a_buffer.hpp): every polygon in the order made,
 // the transparent ones into fragment lists, which are resolved at the end.
-void drawBandWithFragments(const ScreenGeometry& screen, const PixelRect& band,
-                           std::span<const int> polygons, std::size_t mostFragments,
-                           ZBuffer& buffer, RasterFrame& frame, ZBufferCounters& counters) {
-  buffer.clear(band);
-  ABuffer fragments(band, mostFragments);
+void drawBandWithFragments(const ScreenGeometry& screen, std::span<const int> polygons,
+                           std::size_t mostFragments, BandDrawing& drawing) {
+  drawing.buffer.clear(drawing.band);
+  ABuffer fragments(drawing.band, mostFragments);
   for (int index : polygons) {
-    if (frame.isTransparent(screen.polygons[index].face)) {
-      addFragments(screen, band, index, buffer, fragments, frame, counters);
+    if (drawing.frame.isTransparent(screen.polygons[index].face)) {
+      addFragments(screen, index, fragments, drawing);
       continue;
     }
-    drawOpaque(screen, band, index, buffer, frame, counters,
+    drawOpaque(screen, index, drawing,
                [&](int x, int y, float inverseDepth) { fragments.cutBehind(x, y, inverseDepth); });
   }
-  resolveFragments(band, buffer, fragments, static_cast<std::int64_t>(screen.polygons.size()),
-                   frame, counters);
+  resolveFragments(drawing.band, drawing.buffer, fragments,
+                   static_cast<std::int64_t>(screen.polygons.size()), drawing.frame,
+                   drawing.counters);
 }
 
 // The most fragments the bands' lists can hold, checked against the memory a
@@ -299,12 +311,13 @@ void ZBufferRenderer::resolveVisibility(const ScreenGeometry& screen,
   const ZBufferCounters counters = drawInBands<ZBufferCounters>(
       workers, screen, madeOrder, frame.width(), frame.height(),
       [&](const PixelRect& band, std::span<const int> polygons, ZBufferCounters& bandCounters) {
+        BandDrawing drawing{band, buffer, frame, bandCounters};
         if (withFragments)
-          drawBandWithFragments(screen, band, polygons,
+          drawBandWithFragments(screen, polygons,
                                 mostFragments[static_cast<std::size_t>(band.y0 / kBandHeight)],
-                                buffer, frame, bandCounters);
+                                drawing);
         else
-          drawBandSorted(screen, band, polygons, blendStepOf, buffer, frame, bandCounters);
+          drawBandSorted(screen, polygons, blendStepOf, drawing);
       });
   stats.add("depth_tests", static_cast<double>(counters.depthTests));
   stats.add("pixels_written", static_cast<double>(counters.pixelsWritten));
