@@ -183,10 +183,7 @@ ScreenGeometry written(const FaceProjector& projector, const std::vector<KeptFac
   for (const KeptFaces& range : ranges) {
     faceStarts.push_back(faceStarts.back() + range.faces.size());
     cornerStarts.push_back(cornerStarts.back() + range.corners);
-    screen.counters.polygonsIn += range.counters.polygonsIn;
-    screen.counters.culled += range.counters.culled;
-    screen.counters.outside += range.counters.outside;
-    screen.counters.clipped += range.counters.clipped;
+    screen.counters += range.counters;
   }
   screen.faces.resize(faceStarts.back());
   screen.polygons.resize(faceStarts.back());

@@ -77,6 +77,14 @@ struct ProjectionCounters {
   std::uint64_t culled = 0;   // back faces of solids, and faces seen exactly edge-on
   std::uint64_t outside = 0;  // wholly outside the view volume
   std::uint64_t clipped = 0;  // cut by its planes
+
+  ProjectionCounters& operator+=(const ProjectionCounters& other) {
+    polygonsIn += other.polygonsIn;
+    culled += other.culled;
+    outside += other.outside;
+    clipped += other.clipped;
+    return *this;
+  }
 };
 
 struct ScreenGeometry {

@@ -146,17 +146,12 @@ RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSett
 // tracers' samples. The scene is tessellated again only when a pass's time
 // differs from the last. The auxiliary buffers are the first pass's, but
 // "cost", which adds up over the passes where it is wanted, as do the counters.
-// A lone pass whose samples each count toward their own pixel alone (the
-// box filter) is its own reconstruction, and takes no film.
 RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
                             RenderObserver& observer, const PassRenderer& renderPass) {
   const std::vector<AccumulationPass> passes = accumulationPasses(scene.camera, settings);
   const int passCount = static_cast<int>(passes.size());
   TessellatedScene tessellated = tessellateForRaster(scene, settings, passes[0].time);
-  std::optional<Film> film;
-  if (passCount > 1 || !ReconstructionFilter(settings.sampling.filter)
-                            .keepsEachSampleInItsPixel(passes[0].pixelOffset))
-    film.emplace(settings.width, settings.height, settings.sampling.filter);
+  Film film(settings.width, settings.height, settings.sampling.filter);
   const Workers workers(settings.threads);
 
   RenderResult accumulated;
@@ -165,7 +160,7 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
       tessellated = tessellateForRaster(scene, settings, passes[pass].time);
     PassObserver passObserver(observer, pass, passCount);
     RenderResult result = renderPass(tessellated, passes[pass], passObserver);
-    if (film) film->addImage(result.image, passes[pass].pixelOffset, workers);
+    film.addImage(std::move(result.image), passes[pass].pixelOffset, workers);
     if (pass == 0) {
       accumulated = std::move(result);
       continue;
@@ -177,10 +172,7 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
         for (int x = 0; x < settings.width; ++x) cost->at(x, y) += passCost.at(x, y);
     }
   }
-  if (film)
-    accumulated.image = film->resolve(workers);
-  else if (accumulated.image.pixels().empty())  // cancelled before its pass
-    accumulated.image = Image(settings.width, settings.height);
+  accumulated.image = film.resolve(workers);
   // A frame is drawn whole, each polygon at once: a region is cut from it.
   cropToRegion(accumulated, settings);
   const double covered = accumulated.stats.value("covered_pixels");

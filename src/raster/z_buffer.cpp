@@ -225,8 +225,10 @@ void addFragments(const ScreenGeometry& screen, int index, ABuffer& fragments,
 
 // Every pixel of the band, its fragments blended over its opaque face by
 // depth; the step of it is numbered `order`, after every polygon's.
-void resolveFragments(const PixelRect& band, const ZBuffer& buffer, ABuffer& fragments,
-                      std::int64_t order, RasterFrame& frame, ZBufferCounters& counters) {
+void resolveFragments(ABuffer& fragments, std::int64_t order, BandDrawing& drawing) {
+  const PixelRect& band = drawing.band;
+  const ZBuffer& buffer = drawing.buffer;
+  RasterFrame& frame = drawing.frame;
   std::optional<Step> step;
   if (frame.steps())
     step.emplace("resolve",
@@ -240,12 +242,12 @@ void resolveFragments(const PixelRect& band, const ZBuffer& buffer, ABuffer& fra
         if (face >= 0) frame.setVisible(x, y, face);
         continue;
       }
-      counters.blends += fragments.show(frame, x, y, face);
+      drawing.counters.blends += fragments.show(frame, x, y, face);
       if (step)
         step->writes.push_back(
             {x, y, frame.image().at(x, y), face >= 0 ? frame.sceneFaceOf(face) : -1});
     }
-  counters.fragments += fragments.counters();
+  drawing.counters.fragments += fragments.counters();
   if (step && !step->writes.empty()) frame.steps()->record(std::move(*step), order, band.y0);
 }
 
@@ -263,9 +265,7 @@ void drawBandWithFragments(const ScreenGeometry& screen, std::span<const int> po
     drawOpaque(screen, index, drawing,
                [&](int x, int y, float inverseDepth) { fragments.cutBehind(x, y, inverseDepth); });
   }
-  resolveFragments(drawing.band, drawing.buffer, fragments,
-                   static_cast<std::int64_t>(screen.polygons.size()), drawing.frame,
-                   drawing.counters);
+  resolveFragments(fragments, static_cast<std::int64_t>(screen.polygons.size()), drawing);
 }
 
 // The most fragments the bands' lists can hold, checked against the memory a

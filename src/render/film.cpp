@@ -95,13 +95,16 @@ void Film::makeSums() {
   weightSum_.assign(pixels, 0.0f);
 }
 
+int Film::tileMargin() const { return static_cast<int>(std::ceil(filter_.radius() - 0.5f)); }
+
 FilmTile Film::tileFor(const PixelRect& tile) const {
-  const int margin = static_cast<int>(std::ceil(filter_.radius() - 0.5f));
+  const int margin = tileMargin();
   return FilmTile(filter_, std::max(0, tile.x0 - margin), std::max(0, tile.y0 - margin),
                   std::min(width_, tile.x1 + margin), std::min(height_, tile.y1 + margin));
 }
 
 void Film::merge(const FilmTile& tile) {
+  assert(!kept_);
   makeSums();
   const int tileWidth = tile.x1_ - tile.x0_;
   for (int y = tile.y0_; y < tile.y1_; ++y) {
@@ -114,10 +117,22 @@ void Film::merge(const FilmTile& tile) {
   }
 }
 
-void Film::addImage(const Image& samples, const Vec2& offset, const Workers& workers) {
+void Film::addImage(Image samples, const Vec2& offset, const Workers& workers) {
   assert(samples.width() == width_ && samples.height() == height_);
-  const std::vector<Neighbour> neighbours = neighboursTaken(filter_, offset);
+  if (weightSum_.empty() && !kept_ && filter_.keepsEachSampleInItsPixel(offset)) {
+    kept_ = KeptImage{std::move(samples), offset};
+    return;
+  }
   makeSums();
+  if (kept_) {
+    gather(kept_->samples, kept_->offset, workers);
+    kept_.reset();
+  }
+  gather(samples, offset, workers);
+}
+
+void Film::gather(const Image& samples, const Vec2& offset, const Workers& workers) {
+  const std::vector<Neighbour> neighbours = neighboursTaken(filter_, offset);
   workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
     for (int y = firstRow; y < endRow; ++y)
       for (int x = 0; x < width_; ++x) {
@@ -132,7 +147,8 @@ void Film::addImage(const Image& samples, const Vec2& offset, const Workers& wor
   });
 }
 
-Image Film::resolve(const Workers& workers) const {
+Image Film::resolve(const Workers& workers) {
+  if (kept_) return std::move(kept_->samples);
   Image image(width_, height_);
   if (weightSum_.empty()) return image;
   workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {

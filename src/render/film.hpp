@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/image.hpp"
@@ -39,8 +40,9 @@ class FilmTile;
 // its samples' weighted colours and the sum of their weights. Threads add
 // samples to tiles of their own; the tiles are merged in tile order once
 // they are all done, so the sums, and the image, do not depend on the
-// number of threads. The sums are made when the first samples are added: a
-// render whose tiles are final (tilesAreFinal) never makes them.
+// number of threads. The sums are made only when they are needed: a render
+// whose tiles are final (tilesAreFinal) never makes them, nor does one
+// image whose filter keeps each sample in its pixel.
 class Film {
  public:
   Film(int width, int height, FilterKind filter);
@@ -48,29 +50,43 @@ class Film {
   // Whether each tile resolves its pixels to their final colours
   // (FilmTile::resolveInto): the filter takes no sample from beyond its
   // pixel (the box), so no tile needs another's samples.
-  bool tilesAreFinal() const { return filter_.radius() <= 0.5f; }
+  bool tilesAreFinal() const { return tileMargin() == 0; }
 
   // An empty tile covering `tile`'s pixels and the margin its samples reach.
   FilmTile tileFor(const PixelRect& tile) const;
+  // A film takes tiles or images, not both.
   void merge(const FilmTile& tile);
 
   // Adds an image of samples, each taken in its pixel at the same `offset`
   // (a pass of the accumulation buffer): the same sums, in the same order,
   // as adding them one by one in raster order, but gathered pixel by pixel,
-  // so that the workers share the rows.
-  void addImage(const Image& samples, const Vec2& offset, const Workers& workers);
+  // so that the workers share the rows. The first image is kept as it is
+  // when the filter keeps each of its samples in its pixel: alone, it is its
+  // own reconstruction.
+  void addImage(Image samples, const Vec2& offset, const Workers& workers);
 
   // The weighted average at every pixel, the workers sharing the rows; black
-  // where no sample reached.
-  Image resolve(const Workers& workers) const;
+  // where no sample reached. Called once, at the end: an image kept whole
+  // is handed over.
+  Image resolve(const Workers& workers);
 
  private:
+  // An image added first, not yet gathered into the sums.
+  struct KeptImage {
+    Image samples;
+    Vec2 offset;
+  };
+
+  // How many pixels beyond its own a sample reaches.
+  int tileMargin() const;
+  void makeSums();
+  void gather(const Image& samples, const Vec2& offset, const Workers& workers);
+
   int width_;
   int height_;
-  void makeSums();
-
   ReconstructionFilter filter_;
-  std::vector<Color> weightedSum_;  // none until samples are added
+  std::optional<KeptImage> kept_;
+  std::vector<Color> weightedSum_;  // none until needed
   std::vector<float> weightSum_;
 };
 
