@@ -36,6 +36,12 @@ float levelStartOf(int level, Encoding encoding) {
 ByteEncoder::ByteEncoder(Encoding encoding) {
   levelStarts_[0] = 0.0f;
   for (int level = 1; level < 256; ++level) levelStarts_[level] = levelStartOf(level, encoding);
+  for (std::size_t range = 0; range < kRanges; ++range) {
+    const float lowest = std::bit_cast<float>(static_cast<std::uint32_t>(range << kRangeShift));
+    rangeLevels_[range] = static_cast<std::uint8_t>(
+        std::upper_bound(levelStarts_.begin(), levelStarts_.end(), lowest) - levelStarts_.begin() -
+        1);
+  }
 }
 
 const ByteEncoder& byteEncoder(Encoding encoding) {

@@ -1,10 +1,14 @@
 // Linear colour values as the 8-bit levels that PNG and PPM store. A level
-// is found in a table of the values at which each level starts, by eight
-// comparisons, instead of by a power (sRGB's curve) and a rounding per
-// value: the same level, found many times faster.
+// is found from the values at which each level starts, instead of by a power
+// (sRGB's curve) and a rounding per value: the same level, found many times
+// faster. A value's leading bits (its exponent and the top of its mantissa)
+// pick a narrow range of values, whose lowest level a second table holds;
+// few ranges hold the start of a level, so one comparison or two finish.
 #pragma once
 
 #include <array>
+#include <bit>
+#include <cstddef>
 #include <cstdint>
 
 #include "io/image_io.hpp"
@@ -23,9 +27,8 @@ class ByteEncoder {
   std::uint8_t operator()(float linear) const {
     // The zero comes first so that a NaN becomes black.
     const float value = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;
-    int level = 0;
-    for (int step = 128; step > 0; step /= 2)
-      if (levelStarts_[level + step] <= value) level += step;
+    int level = rangeLevels_[std::bit_cast<std::uint32_t>(value) >> kRangeShift];
+    while (level < 255 && levelStarts_[level + 1] <= value) ++level;
     return static_cast<std::uint8_t>(level);
   }
 
@@ -33,7 +36,12 @@ class ByteEncoder {
   float levelStart(int level) const { return levelStarts_[level]; }
 
  private:
+  // The floats of [0, 1] fall in about 2^14 ranges, 128 to each power of two.
+  static constexpr int kRangeShift = 16;
+  static constexpr std::size_t kRanges = (std::bit_cast<std::uint32_t>(1.0f) >> kRangeShift) + 1;
+
   std::array<float, 256> levelStarts_;
+  std::array<std::uint8_t, kRanges> rangeLevels_;  // the level of each range's lowest value
 };
 
 // The encoder of each encoding, made once.

@@ -217,6 +217,69 @@ void checkPlyHeaderLine(const std::vector<std::string_view>& words, int line) {
                     "' is not a PLY type (char, uchar, short, ushort, int, uint, float, double)");
 }
 
+// The vertex and face counts of an OFF file, as the digits Assimp's reader
+// takes for them, and where the lines after them start.
+struct OffCounts {
+  std::string_view vertices;
+  std::string_view faces;
+  std::size_t bodyStart = 0;
+};
+
+// Follows Assimp's reader, which trusts the counts it finds: a keyword of
+// optional prefixes (ST, C, N, 4, n) and OFF, or none; a dimension when the
+// prefix has n; then the counts, each as the digits a word starts with, read
+// into 32 bits that wrap. Nothing where the reader refuses the header itself.
+std::optional<OffCounts> offCountsAsAssimpReadsThem(std::string_view text) {
+  std::size_t at = 0;
+  const auto isDigitAt = [&](std::size_t i) {
+    return i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) != 0;
+  };
+  const auto skipToNextToken = [&] {
+    for (;;) {
+      at = std::min(text.find_first_not_of(" \t\r\n", at), text.size());
+      if (at == text.size() || text[at] != '#') return;
+      at = std::min(text.find('\n', at), text.size());
+    }
+  };
+  const auto takes = [&](std::string_view prefix) {
+    if (!text.substr(at).starts_with(prefix)) return false;
+    at += prefix.size();
+    return true;
+  };
+  const auto digits = [&] {
+    const std::size_t first = at;
+    while (isDigitAt(at)) ++at;
+    return text.substr(first, at - first);
+  };
+  skipToNextToken();
+  takes("ST");
+  takes("C");
+  takes("N");
+  takes("4");
+  const bool hasDimension = takes("n");
+  const bool hasKeyword = takes("OFF");
+  skipToNextToken();
+  if (!hasKeyword && !isDigitAt(at)) return std::nullopt;
+  if (hasDimension) {
+    digits();
+    skipToNextToken();
+  }
+  OffCounts counts;
+  counts.vertices = digits();
+  skipToNextToken();
+  counts.faces = digits();
+  counts.bodyStart = std::min(text.find('\n', at), text.size()) + 1;
+  return counts;
+}
+
+// Whether the count written as `digits` exceeds `most`, however many digits
+// it has. No digits read as 0.
+bool countBeyond(std::string_view digits, std::uint64_t most) {
+  if (digits.empty()) return false;
+  const std::optional<std::uint64_t> count = countIn(digits);
+  return !count || *count > most;
+}
+
 }  // namespace
 
 void checkPlyHeader(std::string_view start, std::uintmax_t fileSize) {
@@ -266,26 +329,17 @@ void checkPlyHeader(std::string_view start, std::uintmax_t fileSize) {
 }
 
 void checkOffHeader(std::string_view start, std::uintmax_t fileSize) {
-  std::vector<std::string_view> words;
-  std::size_t at = 0;
-  while (words.size() < 4 && at < start.size()) {
-    const std::size_t lineEnd = std::min(start.find('\n', at), start.size());
-    std::string_view line = start.substr(at, lineEnd - at);
-    line = line.substr(0, line.find('#'));
-    for (std::string_view word : wordsOf(line)) words.push_back(word);
-    at = lineEnd + 1;
-  }
-  if (words.size() < 3 || !lowercase(words[0]).ends_with("off")) return;  // Assimp says why
-  const std::optional<std::uint64_t> vertices = countIn(words[1]);
-  const std::optional<std::uint64_t> faces = countIn(words[2]);
-  if (!vertices || !faces) return;
-  // A vertex is at least "0 0 0\n", a face at least "0\n".
-  constexpr std::uint64_t kLeastVertex = 6, kLeastFace = 2;
-  const std::uintmax_t body = fileSize - std::min<std::uintmax_t>(at, fileSize);
-  if (*vertices > body / kLeastVertex + 1 || *faces > body / kLeastFace + 1)
+  const std::optional<OffCounts> counts = offCountsAsAssimpReadsThem(start);
+  if (!counts) return;  // Assimp says why
+  // A vertex or a face line holds at least a digit and its line's end.
+  constexpr std::uint64_t kLeastLine = 2;
+  const std::uintmax_t body = fileSize - std::min<std::uintmax_t>(counts->bodyStart, fileSize);
+  const std::uint64_t most = body / kLeastLine + 1;
+  if (countBeyond(counts->vertices, most) || countBeyond(counts->faces, most))
     throw MeshFileError("the file is cut short or corrupt: its OFF header promises " +
-                        std::to_string(*vertices) + " vertices and " + std::to_string(*faces) +
-                        " faces, but " + std::to_string(body) + " bytes follow the header");
+                        std::string(counts->vertices) + " vertices and " +
+                        std::string(counts->faces) + " faces, but " + std::to_string(body) +
+                        " bytes follow the header");
 }
 
 }  // namespace rise

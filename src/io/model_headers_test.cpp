@@ -143,5 +143,42 @@ TEST(OffHeader, RefusesCountsTheFileCannotHold) {
   }
 }
 
+// The message checkOffHeader gives, or "" when it passes the file.
+std::string offProblem(const std::string& file) {
+  try {
+    checkOffHeader(file, file.size());
+  } catch (const MeshFileError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// Assimp reads a count's leading digits into 32 bits that wrap, so a count
+// too long for any integer would still be trusted.
+TEST(OffHeader, RefusesCountsOfAnyLength) {
+  const std::string tooLong(58, '5');
+  EXPECT_EQ(offProblem("OFF\n4 " + tooLong + " 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n"),
+            "the file is cut short or corrupt: its OFF header promises 4 vertices and " + tooLong +
+                " faces, but 32 bytes follow the header");
+  EXPECT_NE(offProblem("OFF\n4 4294967297 0\n0 0 0\n"), "");  // wraps to 1
+}
+
+// The counts are found where Assimp's reader finds them: after a keyword with
+// prefixes, after an n-dimension, on the keyword's own line, or with no
+// keyword at all.
+TEST(OffHeader, FindsTheCountsWhereverTheReaderDoes) {
+  const std::string body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  for (const std::string header :
+       {"OFF 3 1 0\n", "COFF\n3 1 0\n", "STCNOFF\n3 1 0\n", "nOFF\n3\n3 1 0\n",
+        "# a model\nOFF # the keyword\n\n3 1 0\n", "3 1 0\n"}) {
+    EXPECT_EQ(offProblem(header + body), "") << header;
+    std::string huge = header;
+    huge.replace(huge.rfind("3 1"), 3, "3 3000000000");
+    EXPECT_NE(offProblem(huge + body), "") << huge;
+  }
+  EXPECT_EQ(offProblem("OFF\n\n"), "");    // no counts: Assimp refuses it
+  EXPECT_EQ(offProblem("solid x\n"), "");  // not an OFF header: Assimp refuses it
+}
+
 }  // namespace
 }  // namespace rise

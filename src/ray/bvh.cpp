@@ -3,9 +3,14 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <thread>
+
+#if defined(__SSE__)
+#include <xmmintrin.h>
+#endif
 
 #include "scene/shapes/triangle.hpp"
 
@@ -75,6 +80,8 @@ FourFloats fourFloatsAt(const float* first) {
   return four;
 }
 
+using FourInts = std::int32_t __attribute__((vector_size(4 * sizeof(std::int32_t))));
+
 FourFloats maximum(FourFloats a, FourFloats b) { return a > b ? a : b; }
 FourFloats minimum(FourFloats a, FourFloats b) { return a < b ? a : b; }
 
@@ -120,6 +127,18 @@ class BoxRay {
   Vec3 inverseDirection_;
   glm::bvec3 entersByMax_;
 };
+
+// The bits of the children whose entries are finite, the ones a ray meets:
+// one instruction where the processor has it.
+unsigned childrenMet(FourFloats entries) {
+  const FourInts met = entries != broadcast(kInfinity);
+#if defined(__SSE__)
+  return static_cast<unsigned>(_mm_movemask_ps(reinterpret_cast<__m128>(met)));
+#else
+  const FourInts bits = met & FourInts{1, 2, 4, 8};
+  return static_cast<unsigned>(bits[0] | bits[1] | bits[2] | bits[3]);
+#endif
+}
 
 // A child that traversal has yet to enter: an inner node, or a leaf.
 struct PendingChild {
@@ -188,15 +207,24 @@ void Bvh::traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCo
       const WideBvhNode& node = nodes_[current.offset];
       boxesTested += kWideBvhWidth;
       const FourFloats entries = boxRay.entries(node, tMin, tMax);
-      // The children met go on the stack by insertion, the nearest on top,
-      // to be entered next.
+      const auto childAt = [&](int child) {
+        return PendingChild{node.offset[child], node.primitiveCount[child], entries[child]};
+      };
+      unsigned met = childrenMet(entries);
+      // A lone child met is entered at once, as most are near the leaves.
+      if (met != 0 && std::has_single_bit(met)) {
+        current = childAt(std::countr_zero(met));
+        continue;
+      }
+      // Several go on the stack by insertion, the nearest on top, to be
+      // entered next.
       const int firstMet = pendingCount;
-      for (int child = 0; child < kWideBvhWidth; ++child) {
-        if (entries[child] == kInfinity) continue;
+      for (; met != 0; met &= met - 1) {
+        const int child = std::countr_zero(met);
         int slot = pendingCount++;
         for (; slot > firstMet && pending[slot - 1].entry < entries[child]; --slot)
           pending[slot] = pending[slot - 1];
-        pending[slot] = {node.offset[child], node.primitiveCount[child], entries[child]};
+        pending[slot] = childAt(child);
       }
     }
     // The next kept child that a hit found since has not put out of reach.
