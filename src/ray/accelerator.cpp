@@ -26,6 +26,11 @@ bool isAvailable(Accel accel) {
   return std::find(available.begin(), available.end(), accel) != available.end();
 }
 
+void Accelerator::nearestOfPacket(RayPacket& packet, float tMin) const {
+  for (int i = 0; i < packet.size; ++i)
+    packet.found[i] = nearest(packet.rays[i], tMin, packet.hits[i], packet.costs[i]);
+}
+
 std::unique_ptr<Accelerator> buildAccelerator(Accel accel,
                                               const std::vector<std::unique_ptr<Shape>>& shapes,
                                               int threads) {

@@ -9,6 +9,7 @@
 //   embree   Intel's Embree 3, when this build found it
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string_view>
 #include <vector>
@@ -33,6 +34,17 @@ class CrossingVisitor {
   ~CrossingVisitor() = default;
 };
 
+// Rays whose nearest hits are wanted together: coherent rays, such as the
+// primary rays of neighbouring pixels, pass through mostly the same boxes.
+inline constexpr int kPacketSize = 8;
+struct RayPacket {
+  int size = 0;  // the rays given, from the first
+  std::array<Ray, kPacketSize> rays;
+  std::array<Hit, kPacketSize> hits;  // as nearest() takes and records each ray's
+  std::array<bool, kPacketSize> found{};
+  std::array<IntersectionCounters, kPacketSize> costs{};  // each ray's own
+};
+
 class Accelerator {
  public:
   virtual ~Accelerator() = default;
@@ -43,6 +55,11 @@ class Accelerator {
   // order, as brute force finds it (Embree keeps whichever it meets first).
   virtual bool nearest(const Ray& ray, float tMin, Hit& hit,
                        IntersectionCounters& counters) const = 0;
+
+  // The nearest hit of each ray of the packet, the same as nearest() finds.
+  // A structure may walk the rays through it together (the BVH does); this
+  // one answers them one at a time.
+  virtual void nearestOfPacket(RayPacket& packet, float tMin) const;
 
   // Tells `visitor` of every shape that the ray meets at some t in (tMin,
   // tMax), in any order and possibly more than once (once per primitive

@@ -195,6 +195,58 @@ TEST(Accelerators, FindTheNearestHitOfBruteForce) {
   }
 }
 
+// Packets of every size: coherent ones (rays from one point to neighbouring
+// points, as a row of pixels' primary rays) and scattered ones, with rays
+// ended early and rays of non-finite components among them. Each ray of a
+// packet finds what it finds alone, to the bit: what brute force finds
+// (above).
+TEST(Accelerators, FindEachRayOfAPacketsNearestHit) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int seed = 0; seed < kScenes; ++seed) {
+    RandomScene random(seed);
+    const Scene scene = random.scene();
+    for (Accel accel : availableAccels()) {
+      const auto structure = buildAccelerator(accel, scene.shapes);
+      RandomScene rays(3000 + seed);
+      int hits = 0;
+      for (int i = 0; i < kRaysPerScene / kPacketSize; ++i) {
+        const bool coherent = i % 2 == 0;
+        const Vec3 eye = rays.point(7.0f), aim = rays.point(4.0f);
+        const float tMin = i % 3 == 0 ? rays.uniform(0.0f, 0.3f) : 0.0f;
+        RayPacket packet;
+        packet.size = 1 + i % kPacketSize;
+        for (int lane = 0; lane < packet.size; ++lane) {
+          packet.rays[lane] = coherent
+                                  ? Ray{eye, aim + 0.05f * Vec3(lane % 4, lane / 4, 0) - eye, 0.5f}
+                                  : rays.ray();
+          if (i % 7 == 0 && lane == 2) packet.rays[lane].direction.y = nan;
+          packet.hits[lane].t = lane % 3 == 1 ? rays.uniform(0.2f, 1.0f) : kInfinity;
+        }
+        const RayPacket given = packet;
+        structure->nearestOfPacket(packet, tMin);
+        for (int lane = 0; lane < packet.size; ++lane) {
+          Hit expected = given.hits[lane];
+          IntersectionCounters counters;
+          const bool found = structure->nearest(given.rays[lane], tMin, expected, counters);
+          ASSERT_EQ(packet.found[lane], found)
+              << accelName(accel) << ", scene " << seed << ", packet " << i << ", lane " << lane;
+          if (!found) continue;
+          ++hits;
+          const Hit& actual = packet.hits[lane];
+          ASSERT_EQ(actual.t, expected.t) << accelName(accel) << ", packet " << i;
+          ASSERT_EQ(actual.shape, expected.shape) << accelName(accel) << ", packet " << i;
+          // A shape records only what it needs (a sphere leaves the rest as it found it).
+          if (expected.shape->primitiveCount() > 1) {
+            EXPECT_EQ(actual.primitive, expected.primitive) << accelName(accel) << ", packet " << i;
+            EXPECT_EQ(actual.barycentric, expected.barycentric) << accelName(accel);
+          }
+        }
+      }
+      EXPECT_GT(hits, kRaysPerScene / 6) << accelName(accel);
+    }
+  }
+}
+
 TEST(Accelerators, LetThroughTheLightOfBruteForce) {
   for (int seed = 0; seed < kScenes; ++seed) {
     RandomScene random(seed);

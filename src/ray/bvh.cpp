@@ -8,7 +8,9 @@
 #include <limits>
 #include <thread>
 
-#if defined(__SSE__)
+#if defined(__AVX__)
+#include <immintrin.h>
+#elif defined(__SSE__)
 #include <xmmintrin.h>
 #endif
 
@@ -17,14 +19,17 @@
 namespace rise {
 namespace {
 
-// Every primitive's box is widened by this fraction of its distance from the
-// origin, so that a hit the primitive's own test finds on its very edge is
-// never outside its box through rounding.
+// Every primitive's box is widened on every side by this fraction of its
+// farthest coordinate from the origin, so that a hit the primitive's own test
+// finds on its very edge is never outside its box through rounding. The
+// same on every axis: a triangle in the plane y = 0 has a box of no height,
+// which rounding in the slab test could otherwise put just beyond the hit.
 constexpr float kBoxAllowance = 1e-6f;
 
 Bounds3 widened(const Bounds3& box) {
-  const Vec3 allowance = kBoxAllowance * glm::max(glm::abs(box.min), glm::abs(box.max));
-  return {box.min - allowance, box.max + allowance};
+  const float allowance =
+      kBoxAllowance * maxComponent(glm::max(glm::abs(box.min), glm::abs(box.max)));
+  return {box.min - Vec3(allowance), box.max + Vec3(allowance)};
 }
 
 // A share of a loop is not worth a thread of its own below this many steps.
@@ -72,7 +77,14 @@ std::vector<BuildPrimitive> primitivesOf(const std::vector<const Shape*>& shapes
 using FourFloats = float __attribute__((vector_size(4 * sizeof(float))));
 static_assert(kWideBvhWidth == 4, "a node's boxes fill one FourFloats an axis");
 
+// Eight floats, for the eight rays of a packet: one AVX register, or two
+// of four where the processor has no wider ones.
+using EightFloats = float __attribute__((vector_size(8 * sizeof(float))));
+using EightInts = std::int32_t __attribute__((vector_size(8 * sizeof(std::int32_t))));
+static_assert(kPacketSize == 8, "a packet's rays fill one EightFloats");
+
 FourFloats broadcast(float value) { return FourFloats{value, value, value, value}; }
+EightFloats broadcastToEight(float value) { return EightFloats{} + value; }
 
 FourFloats fourFloatsAt(const float* first) {
   FourFloats four;
@@ -82,8 +94,14 @@ FourFloats fourFloatsAt(const float* first) {
 
 using FourInts = std::int32_t __attribute__((vector_size(4 * sizeof(std::int32_t))));
 
-FourFloats maximum(FourFloats a, FourFloats b) { return a > b ? a : b; }
-FourFloats minimum(FourFloats a, FourFloats b) { return a < b ? a : b; }
+template <typename Floats>
+Floats maximum(Floats a, Floats b) {
+  return a > b ? a : b;
+}
+template <typename Floats>
+Floats minimum(Floats a, Floats b) {
+  return a < b ? a : b;
+}
 
 // A ray made ready for many box tests: the slab test (Kay and Kajiya 1986)
 // divides by the direction, so its inverse is computed once, and along each
@@ -127,6 +145,61 @@ class BoxRay {
   Vec3 inverseDirection_;
   glm::bvec3 entersByMax_;
 };
+
+// The rays of a packet made ready for box tests, lane by lane as BoxRay
+// makes one ray: the same arithmetic, so that each lane finds the same
+// entries as its ray alone would. Here the eight rays test one box at once,
+// where BoxRay's one ray tests four.
+class BoxPacket {
+ public:
+  explicit BoxPacket(const RayPacket& packet) {
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      // Lanes past the packet's rays repeat its first; no child is entered for them.
+      const Ray& ray = packet.rays[lane < packet.size ? lane : 0];
+      for (int axis = 0; axis < 3; ++axis) {
+        origin_[axis][lane] = ray.origin[axis];
+        inverseDirection_[axis][lane] = 1.0f / ray.direction[axis];
+        entersByMax_[axis][lane] = inverseDirection_[axis][lane] < 0.0f ? -1 : 0;
+      }
+    }
+  }
+
+  // Where each lane's ray enters the child's box within (tMin, its tMax), or
+  // infinity where it misses it there.
+  [[gnu::always_inline]] EightFloats entries(const WideBvhNode& node, int child, float tMin,
+                                             EightFloats tMax) const {
+    EightFloats enter = broadcastToEight(tMin);
+    EightFloats exit = broadcastToEight(kInfinity);
+    for (int axis = 0; axis < 3; ++axis) {
+      const EightFloats lower = broadcastToEight(node.lower[axis][child]);
+      const EightFloats upper = broadcastToEight(node.upper[axis][child]);
+      const EightFloats nearFaces = entersByMax_[axis] != 0 ? upper : lower;
+      const EightFloats farFaces = entersByMax_[axis] != 0 ? lower : upper;
+      enter = maximum((nearFaces - origin_[axis]) * inverseDirection_[axis], enter);
+      exit = minimum((farFaces - origin_[axis]) * inverseDirection_[axis], exit);
+    }
+    return enter <= minimum(exit * kRobustExit, tMax) ? enter : broadcastToEight(kInfinity);
+  }
+
+ private:
+  static constexpr float kRobustExit = 1.0f + 4.0f * std::numeric_limits<float>::epsilon();
+
+  EightFloats origin_[3];
+  EightFloats inverseDirection_[3];
+  EightInts entersByMax_[3];
+};
+
+// The lanes whose entries are finite, the rays that meet a box.
+unsigned lanesMet(EightFloats entries) {
+  const EightInts met = entries != broadcastToEight(kInfinity);
+#if defined(__AVX__)
+  return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(met)));
+#else
+  unsigned lanes = 0;
+  for (int lane = 0; lane < kPacketSize; ++lane) lanes |= (met[lane] != 0 ? 1u : 0u) << lane;
+  return lanes;
+#endif
+}
 
 // The bits of the children whose entries are finite, the ones a ray meets:
 // one instruction where the processor has it.
@@ -252,16 +325,17 @@ float nextAbove(float t) {
 // gives the same hit.
 class NearestHit {
  public:
-  explicit NearestHit(Hit& hit) : hit_(hit) {}
+  NearestHit() = default;  // to be given its hit
+  explicit NearestHit(Hit& hit) : hit_(&hit) {}
 
   // Offers the hit of one primitive, found by `intersect(candidate)`.
   template <typename Intersect>
   bool offer(PrimitiveRef ref, Intersect&& intersect) {
-    Hit candidate = hit_;
-    candidate.t = nextAbove(hit_.t);  // an equal t too
+    Hit candidate = *hit_;
+    candidate.t = nextAbove(hit_->t);  // an equal t too
     if (!intersect(candidate)) return false;
-    if (candidate.t == hit_.t && !(found_ && comesBefore(ref, ref_))) return false;
-    hit_ = candidate;
+    if (candidate.t == hit_->t && !(found_ && comesBefore(ref, ref_))) return false;
+    *hit_ = candidate;
     ref_ = ref;
     found_ = true;
     return true;
@@ -272,28 +346,130 @@ class NearestHit {
     return a.shape < b.shape || (a.shape == b.shape && a.primitive < b.primitive);
   }
 
-  Hit& hit_;
+  Hit* hit_ = nullptr;
   PrimitiveRef ref_{0, 0};
   bool found_ = false;
 };
 
-bool Bvh::nearest(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& counters) const {
-  NearestHit nearest(hit);
+bool Bvh::offerUnbounded(const Ray& ray, float tMin, NearestHit& nearest,
+                         IntersectionCounters& counters) const {
   bool found = false;
   for (int shape : unbounded_) {
     found |= nearest.offer({static_cast<std::uint32_t>(shape), 0}, [&](Hit& candidate) {
       return shapes_[shape]->intersect(ray, tMin, candidate, counters);
     });
   }
+  return found;
+}
+
+bool Bvh::offerLeaf(std::uint32_t first, std::uint32_t count, const Ray& ray, float tMin,
+                    NearestHit& nearest, IntersectionCounters& counters) const {
+  bool found = false;
+  for (std::uint32_t i = first; i < first + count; ++i) {
+    found |= nearest.offer(primitives_[i].ref, [&](Hit& candidate) {
+      return intersectPrimitive(primitives_[i], ray, tMin, candidate, counters);
+    });
+  }
+  return found;
+}
+
+bool Bvh::nearest(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& counters) const {
+  NearestHit nearest(hit);
+  bool found = offerUnbounded(ray, tMin, nearest, counters);
   traverse(ray, tMin, hit.t, counters, [&](std::uint32_t first, std::uint32_t count) {
-    for (std::uint32_t i = first; i < first + count; ++i) {
-      found |= nearest.offer(primitives_[i].ref, [&](Hit& candidate) {
-        return intersectPrimitive(primitives_[i], ray, tMin, candidate, counters);
-      });
-    }
+    found |= offerLeaf(first, count, ray, tMin, nearest, counters);
     return true;
   });
   return found;
+}
+
+namespace {
+
+// A child that a packet's traversal has yet to enter, and the lanes whose
+// rays meet it, the nearest at `entry`.
+struct PendingPacketChild {
+  std::uint32_t offset;          // the node, or the leaf's first primitive
+  std::uint32_t primitiveCount;  // 0 for an inner node
+  unsigned lanes;
+  float entry;
+};
+
+// The nearest of eight entries.
+float nearestEntry(EightFloats entries) {
+  float nearest = entries[0];
+  for (int lane = 1; lane < kPacketSize; ++lane) nearest = std::min(nearest, entries[lane]);
+  return nearest;
+}
+
+// All ones in the lanes of `lanes`' bits, zero in the others.
+EightInts laneMask(unsigned lanes) {
+  const EightInts bits{1, 2, 4, 8, 16, 32, 64, 128};
+  return (bits & static_cast<std::int32_t>(lanes)) != 0;
+}
+
+// Whether a kept child is still in reach of one of its rays: the nearest
+// hit of one of them is beyond the child's nearest entry.
+bool anyReaches(const PendingPacketChild& child, EightFloats tMax) {
+  for (unsigned lanes = child.lanes; lanes != 0; lanes &= lanes - 1)
+    if (child.entry <= tMax[std::countr_zero(lanes)]) return true;
+  return false;
+}
+
+}  // namespace
+
+// The packet goes down the tree as one ray does, nearest child first, into
+// every child that any of its rays meets; a child keeps the lanes of the
+// rays that meet it, and only those test its children and its primitives.
+// Each ray keeps its own nearest hit, so that it finds the same as alone.
+void Bvh::nearestOfPacket(RayPacket& packet, float tMin) const {
+  std::array<NearestHit, kPacketSize> nearest;
+  unsigned traversing = 0;
+  EightFloats tMax = broadcastToEight(kInfinity);
+  for (int lane = 0; lane < packet.size; ++lane) {
+    nearest[lane] = NearestHit(packet.hits[lane]);
+    packet.found[lane] = offerUnbounded(packet.rays[lane], tMin, nearest[lane], packet.costs[lane]);
+    tMax[lane] = packet.hits[lane].t;
+    if (!nodes_.empty() && isFinite(packet.rays[lane])) traversing |= 1u << lane;
+  }
+  if (traversing == 0) return;
+  const BoxPacket boxes(packet);
+  EightInts boxesTested{};
+  PendingPacketChild pending[kMaxPendingChildren];
+  int pendingCount = 0;
+  PendingPacketChild current{0, 0, traversing, tMin};  // the root
+  while (true) {
+    if (current.primitiveCount > 0) {
+      for (unsigned lanes = current.lanes; lanes != 0; lanes &= lanes - 1) {
+        const int lane = std::countr_zero(lanes);
+        packet.found[lane] |= offerLeaf(current.offset, current.primitiveCount, packet.rays[lane],
+                                        tMin, nearest[lane], packet.costs[lane]);
+        tMax[lane] = packet.hits[lane].t;
+      }
+    } else {
+      const WideBvhNode& node = nodes_[current.offset];
+      // The lanes not in this child reach no box.
+      const EightInts active = laneMask(current.lanes);
+      boxesTested += active & kWideBvhWidth;
+      const EightFloats reach = active != 0 ? tMax : broadcastToEight(-kInfinity);
+      const int firstMet = pendingCount;
+      for (int child = 0; child < kWideBvhWidth; ++child) {
+        const EightFloats entries = boxes.entries(node, child, tMin, reach);
+        const unsigned lanes = lanesMet(entries);
+        if (lanes == 0) continue;
+        const float entry = nearestEntry(entries);
+        int slot = pendingCount++;
+        for (; slot > firstMet && pending[slot - 1].entry < entry; --slot)
+          pending[slot] = pending[slot - 1];
+        pending[slot] = {node.offset[child], node.primitiveCount[child], lanes, entry};
+      }
+    }
+    // The next kept child that some of its rays' hits since leave in reach.
+    while (pendingCount > 0 && !anyReaches(pending[pendingCount - 1], tMax)) --pendingCount;
+    if (pendingCount == 0) break;
+    current = pending[--pendingCount];
+  }
+  for (int lane = 0; lane < packet.size; ++lane)
+    packet.costs[lane].nodesVisited += static_cast<std::uint64_t>(boxesTested[lane]);
 }
 
 void Bvh::visitCrossings(const Ray& ray, float tMin, float tMax, CrossingVisitor& visitor,

@@ -19,7 +19,13 @@
 // four children's boxes (slab test, with the ray's inverse direction
 // computed once), enters the nearest it meets and keeps the others on a
 // small stack, farthest deepest; once a hit nearer than a kept box's entry
-// is found, that box is skipped. A shadow ray stops at the first opaque
+// is found, that box is skipped. A packet of coherent rays (the primary rays
+// of neighbouring pixels) goes down together: at each node the packet's
+// rays test one child's box at once, the packet enters every child any of
+// them meets, and only those rays go on in it; each ray keeps its own
+// nearest hit, the same as alone (I. Wald, P. Slusallek, C. Benthin and
+// M. Wagner, "Interactive Rendering with Coherent Ray Tracing", Computer
+// Graphics Forum 20(3), 2001). A shadow ray stops at the first opaque
 // primitive it meets. A ray with a NaN or infinite component meets nothing
 // (its box tests would find it in every box, empty ones too).
 #pragma once
@@ -32,6 +38,8 @@
 #include "ray/wide_bvh.hpp"
 
 namespace rise {
+
+class NearestHit;
 
 class Bvh final : public Accelerator {
  public:
@@ -48,6 +56,7 @@ class Bvh final : public Accelerator {
   explicit Bvh(const std::vector<std::unique_ptr<Shape>>& shapes, int threads = 0);
 
   bool nearest(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& counters) const override;
+  void nearestOfPacket(RayPacket& packet, float tMin) const override;
   void visitCrossings(const Ray& ray, float tMin, float tMax, CrossingVisitor& visitor,
                       IntersectionCounters& counters) const override;
 
@@ -62,6 +71,12 @@ class Bvh final : public Accelerator {
   template <typename VisitLeaf>
   void traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCounters& counters,
                 VisitLeaf&& visitLeaf) const;
+  // Offers the ray's hits on the shapes outside the tree, or on the
+  // primitives of a leaf, to its nearest hit; whether any was taken.
+  bool offerUnbounded(const Ray& ray, float tMin, NearestHit& nearest,
+                      IntersectionCounters& counters) const;
+  bool offerLeaf(std::uint32_t first, std::uint32_t count, const Ray& ray, float tMin,
+                 NearestHit& nearest, IntersectionCounters& counters) const;
   bool intersectPrimitive(const LeafPrimitive& primitive, const Ray& ray, float tMin, Hit& hit,
                           IntersectionCounters& counters) const;
 

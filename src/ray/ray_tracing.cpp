@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "ray/ray_tree_builder.hpp"
 #include "ray/shadow_terminator.hpp"
@@ -321,6 +322,63 @@ void sampleAdaptively(TileTrace& tile, const RenderSettings& settings, const Tra
   }
 }
 
+namespace {
+
+// Whether every pixel places its samples alike, with nothing random: at its
+// centre, or on the same regular grid.
+bool placesSamplesAlike(const PixelSampling& sampling) {
+  return sampling.pattern == SamplePattern::None || sampling.pattern == SamplePattern::Regular;
+}
+
+// The primary hits of a row of a tile, found a packet of rays at a time
+// (bvh.hpp) before the row is shaded. Where every pixel places its samples
+// alike, a row's samples in order lie side by side and their rays are
+// coherent: eight neighbouring pixels' centres, or the grid of one or two.
+class RowOfPrimaryHits {
+ public:
+  RowOfPrimaryHits(const TracingContext& context, const ViewFrame& view, const PixelRect& area)
+      : context_(context), view_(view), area_(area) {}
+
+  // Sample i of the pixel, at offsets[i] as in every pixel, traced as
+  // tracePrimary traces it, from the hit found with the rest of its row's.
+  SampleResult trace(const glm::ivec2& pixel, int i, const std::vector<Vec2>& offsets,
+                     TraceCounters& counters, RayTree* tree) {
+    if (pixel.y != row_) findHits(pixel.y, offsets);
+    const std::size_t sample =
+        static_cast<std::size_t>(pixel.x - area_.x0) * offsets.size() + static_cast<std::size_t>(i);
+    const RayPacket& packet = packets_[sample / kPacketSize];
+    const std::size_t lane = sample % kPacketSize;
+    ++counters.primaryRays;
+    counters.intersections += packet.costs[lane];
+    SingleRayChoices single;
+    return shadeFirstHit(context_, packet.rays[lane],
+                         packet.found[lane] ? &packet.hits[lane] : nullptr, single, counters, tree);
+  }
+
+ private:
+  void findHits(int y, const std::vector<Vec2>& offsets) {
+    row_ = y;
+    packets_.clear();
+    for (int x = area_.x0; x < area_.x1; ++x) {
+      for (const Vec2& offset : offsets) {
+        if (packets_.empty() || packets_.back().size == kPacketSize) packets_.emplace_back();
+        RayPacket& packet = packets_.back();
+        const Vec2 raster = Vec2(glm::ivec2(x, y)) + offset;
+        packet.rays[static_cast<std::size_t>(packet.size++)] = view_.primaryRay(raster.x, raster.y);
+      }
+    }
+    for (RayPacket& packet : packets_) context_.intersector.nearestOfPacket(packet, 0.0f);
+  }
+
+  const TracingContext& context_;
+  const ViewFrame& view_;
+  PixelRect area_;
+  int row_ = -1;
+  std::vector<RayPacket> packets_;
+};
+
+}  // namespace
+
 RenderResult WhittedRayTracer::render(const Scene& scene, const RenderSettings& settings,
                                       RenderObserver& observer) const {
   const SceneIntersector intersector(scene, settings.accel, settings.threads);
@@ -335,12 +393,20 @@ RenderResult WhittedRayTracer::render(const Scene& scene, const RenderSettings& 
     if (sampling.pattern == SamplePattern::Adaptive)
       return sampleAdaptively(tile, settings, traceAt);
     std::vector<Vec2> offsets;
+    const auto place = [&](const glm::ivec2&, Rng& rng) -> const std::vector<Vec2>& {
+      samplePositions(sampling.pattern, sampling.samples, rng, offsets);
+      return offsets;
+    };
+    if (placesSamplesAlike(sampling)) {
+      RowOfPrimaryHits row(context, view, tile.area());
+      return tracePixels(
+          tile, settings.seed, place,
+          [&](const glm::ivec2& pixel, int i, Rng&, TraceCounters& counters, RayTree* tree) {
+            return row.trace(pixel, i, offsets, counters, tree);
+          });
+    }
     tracePixels(
-        tile, settings.seed,
-        [&](const glm::ivec2&, Rng& rng) -> const std::vector<Vec2>& {
-          samplePositions(sampling.pattern, sampling.samples, rng, offsets);
-          return offsets;
-        },
+        tile, settings.seed, place,
         [&](const glm::ivec2& pixel, int i, Rng& rng, TraceCounters& counters, RayTree* tree) {
           return traceAt(Vec2(pixel) + offsets[static_cast<std::size_t>(i)], rng, counters, tree);
         });

@@ -23,6 +23,11 @@ class SceneIntersector {
     return accelerator_->nearest(ray, tMin, hit, counters);
   }
 
+  // The nearest hit of each ray of the packet, as nearest() finds it.
+  void nearestOfPacket(RayPacket& packet, float tMin) const {
+    accelerator_->nearestOfPacket(packet, tMin);
+  }
+
   // The fraction of light that travels along `ray` from t = tMin to t = tMax:
   // zero if an opaque shape is in the way; each transparent shape on the way
   // filters it once by its transmission times its colour. Shadow rays are not
