@@ -89,14 +89,18 @@ TEST(Md2Header, RefusesATriangleOutsideTheVertices) {
   EXPECT_EQ(md2Problem(file), "triangle 0 refers to vertex 65535, but the model has 342 vertices");
 }
 
-std::string plyProblem(const std::string& file) {
+// The message a header check gives the whole file, or "" when it passes it.
+std::string headerProblem(void (*check)(std::string_view, std::uintmax_t),
+                          const std::string& file) {
   try {
-    checkPlyHeader(file, file.size());
+    check(file, file.size());
   } catch (const MeshFileError& error) {
     return error.what();
   }
   return "";
 }
+
+std::string plyProblem(const std::string& file) { return headerProblem(checkPlyHeader, file); }
 
 const std::string kTriangleHeader =
     "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
@@ -143,15 +147,7 @@ TEST(OffHeader, RefusesCountsTheFileCannotHold) {
   }
 }
 
-// The message checkOffHeader gives, or "" when it passes the file.
-std::string offProblem(const std::string& file) {
-  try {
-    checkOffHeader(file, file.size());
-  } catch (const MeshFileError& error) {
-    return error.what();
-  }
-  return "";
-}
+std::string offProblem(const std::string& file) { return headerProblem(checkOffHeader, file); }
 
 // Assimp reads a count's leading digits into 32 bits that wrap, so a count
 // too long for any integer would still be trusted.

@@ -311,9 +311,11 @@ void Bvh::traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCo
 namespace {
 
 // The next float above t: std::nextafter(t, infinity), without a call into
-// the math library for the positive distances that hits have.
+// the math library for the positive distances that hits have, nor for the
+// infinity of a ray that has hit nothing yet.
 float nextAbove(float t) {
   if (t > 0.0f && t < kInfinity) return std::bit_cast<float>(std::bit_cast<std::uint32_t>(t) + 1);
+  if (t == kInfinity) return t;
   return std::nextafter(t, kInfinity);
 }
 
