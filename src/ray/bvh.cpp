@@ -78,7 +78,11 @@ using FourFloats = float __attribute__((vector_size(4 * sizeof(float))));
 static_assert(kWideBvhWidth == 4, "a node's boxes fill one FourFloats an axis");
 
 // Eight floats, for the eight rays of a packet: one AVX register, or two
-// of four where the processor has no wider ones.
+// of four where the processor has no wider ones. Without AVX, GCC warns that
+// passing them changes the calling convention; they never leave this file.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
 using EightFloats = float __attribute__((vector_size(8 * sizeof(float))));
 using EightInts = std::int32_t __attribute__((vector_size(8 * sizeof(std::int32_t))));
 static_assert(kPacketSize == 8, "a packet's rays fill one EightFloats");
@@ -353,8 +357,8 @@ class NearestHit {
   bool found_ = false;
 };
 
-bool Bvh::offerUnbounded(const Ray& ray, float tMin, NearestHit& nearest,
-                         IntersectionCounters& counters) const {
+inline bool Bvh::offerUnbounded(const Ray& ray, float tMin, NearestHit& nearest,
+                                IntersectionCounters& counters) const {
   bool found = false;
   for (int shape : unbounded_) {
     found |= nearest.offer({static_cast<std::uint32_t>(shape), 0}, [&](Hit& candidate) {
@@ -364,8 +368,8 @@ bool Bvh::offerUnbounded(const Ray& ray, float tMin, NearestHit& nearest,
   return found;
 }
 
-bool Bvh::offerLeaf(std::uint32_t first, std::uint32_t count, const Ray& ray, float tMin,
-                    NearestHit& nearest, IntersectionCounters& counters) const {
+inline bool Bvh::offerLeaf(std::uint32_t first, std::uint32_t count, const Ray& ray, float tMin,
+                           NearestHit& nearest, IntersectionCounters& counters) const {
   bool found = false;
   for (std::uint32_t i = first; i < first + count; ++i) {
     found |= nearest.offer(primitives_[i].ref, [&](Hit& candidate) {

@@ -73,10 +73,11 @@ class Bvh final : public Accelerator {
                 VisitLeaf&& visitLeaf) const;
   // Offers the ray's hits on the shapes outside the tree, or on the
   // primitives of a leaf, to its nearest hit; whether any was taken.
-  bool offerUnbounded(const Ray& ray, float tMin, NearestHit& nearest,
-                      IntersectionCounters& counters) const;
-  bool offerLeaf(std::uint32_t first, std::uint32_t count, const Ray& ray, float tMin,
-                 NearestHit& nearest, IntersectionCounters& counters) const;
+  [[gnu::always_inline]] bool offerUnbounded(const Ray& ray, float tMin, NearestHit& nearest,
+                                             IntersectionCounters& counters) const;
+  [[gnu::always_inline]] bool offerLeaf(std::uint32_t first, std::uint32_t count, const Ray& ray,
+                                        float tMin, NearestHit& nearest,
+                                        IntersectionCounters& counters) const;
   bool intersectPrimitive(const LeafPrimitive& primitive, const Ray& ray, float tMin, Hit& hit,
                           IntersectionCounters& counters) const;
 
