@@ -78,6 +78,12 @@ GridShape gridShape(int n);
 // caller keeps saves an allocation per pixel.
 void samplePositions(SamplePattern pattern, int n, Rng& rng, std::vector<Vec2>& positions);
 
+// Whether samplePositions puts the samples in the same places in every pixel,
+// drawing nothing from the generator: at the centre, or on a regular grid.
+inline bool placesAlikeInEveryPixel(SamplePattern pattern) {
+  return pattern == SamplePattern::None || pattern == SamplePattern::Regular;
+}
+
 // Fills `values` with n jittered values in [0, 1): one in each of n equal
 // intervals, in order.
 void jitteredValues(int n, Rng& rng, std::vector<float>& values);

@@ -75,6 +75,7 @@ std::vector<BuildPrimitive> primitivesOf(const std::vector<const Shape*>& shapes
 // vector extension GCC and clang share, which compiles `a > b ? a : b` to one
 // instruction on any processor with vectors of four floats.
 using FourFloats = float __attribute__((vector_size(4 * sizeof(float))));
+using FourInts = std::int32_t __attribute__((vector_size(4 * sizeof(std::int32_t))));
 static_assert(kWideBvhWidth == 4, "a node's boxes fill one FourFloats an axis");
 
 // Eight floats, for the eight rays of a packet: one AVX register, or two
@@ -95,8 +96,6 @@ FourFloats fourFloatsAt(const float* first) {
   std::memcpy(&four, first, sizeof four);
   return four;
 }
-
-using FourInts = std::int32_t __attribute__((vector_size(4 * sizeof(std::int32_t))));
 
 template <typename Floats>
 Floats maximum(Floats a, Floats b) {
@@ -227,6 +226,38 @@ struct PendingChild {
 // Each inner node visited keeps up to three of its children.
 constexpr int kMaxPendingChildren = (kWideBvhWidth - 1) * kMaxBvhDepth + 1;
 
+// The children a traversal has yet to enter (Child: a PendingChild, or a
+// packet's). Each node opened pushes the children it meets, ordered among
+// themselves by insertion, the nearest on top, to be entered next.
+template <typename Child>
+class PendingChildren {
+ public:
+  // The children of the node being opened begin here.
+  void openNode() { firstOfNode_ = count_; }
+
+  void push(const Child& child) {
+    int slot = count_++;
+    for (; slot > firstOfNode_ && children_[slot - 1].entry < child.entry; --slot)
+      children_[slot] = children_[slot - 1];
+    children_[slot] = child;
+  }
+
+  // Takes the top child still in reach (`inReach(child)`) into `next`,
+  // dropping those above it that are not; false when none is left.
+  template <typename InReach>
+  bool takeNext(Child& next, InReach&& inReach) {
+    while (count_ > 0 && !inReach(children_[count_ - 1])) --count_;
+    if (count_ == 0) return false;
+    next = children_[--count_];
+    return true;
+  }
+
+ private:
+  Child children_[kMaxPendingChildren];
+  int count_ = 0;
+  int firstOfNode_ = 0;
+};
+
 int hardwareThreads() { return std::max(1u, std::thread::hardware_concurrency()); }
 
 }  // namespace
@@ -274,8 +305,7 @@ void Bvh::traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCo
   if (nodes_.empty() || !isFinite(ray)) return;
   const BoxRay boxRay(ray);
   std::uint64_t boxesTested = 0;
-  PendingChild pending[kMaxPendingChildren];
-  int pendingCount = 0;
+  PendingChildren<PendingChild> pending;
   PendingChild current{0, 0, tMin};  // the root
   while (true) {
     if (current.primitiveCount > 0) {
@@ -293,21 +323,12 @@ void Bvh::traverse(const Ray& ray, float tMin, const float& tMax, IntersectionCo
         current = childAt(std::countr_zero(met));
         continue;
       }
-      // Several go on the stack by insertion, the nearest on top, to be
-      // entered next.
-      const int firstMet = pendingCount;
-      for (; met != 0; met &= met - 1) {
-        const int child = std::countr_zero(met);
-        int slot = pendingCount++;
-        for (; slot > firstMet && pending[slot - 1].entry < entries[child]; --slot)
-          pending[slot] = pending[slot - 1];
-        pending[slot] = childAt(child);
-      }
+      pending.openNode();
+      for (; met != 0; met &= met - 1) pending.push(childAt(std::countr_zero(met)));
     }
     // The next kept child that a hit found since has not put out of reach.
-    while (pendingCount > 0 && pending[pendingCount - 1].entry > tMax) --pendingCount;
-    if (pendingCount == 0) break;
-    current = pending[--pendingCount];
+    if (!pending.takeNext(current, [&](const PendingChild& child) { return child.entry <= tMax; }))
+      break;
   }
   counters.nodesVisited += boxesTested;
 }
@@ -440,8 +461,7 @@ void Bvh::nearestOfPacket(RayPacket& packet, float tMin) const {
   if (traversing == 0) return;
   const BoxPacket boxes(packet);
   EightInts boxesTested{};
-  PendingPacketChild pending[kMaxPendingChildren];
-  int pendingCount = 0;
+  PendingChildren<PendingPacketChild> pending;
   PendingPacketChild current{0, 0, traversing, tMin};  // the root
   while (true) {
     if (current.primitiveCount > 0) {
@@ -457,22 +477,19 @@ void Bvh::nearestOfPacket(RayPacket& packet, float tMin) const {
       const EightInts active = laneMask(current.lanes);
       boxesTested += active & kWideBvhWidth;
       const EightFloats reach = active != 0 ? tMax : broadcastToEight(-kInfinity);
-      const int firstMet = pendingCount;
+      pending.openNode();
       for (int child = 0; child < kWideBvhWidth; ++child) {
         const EightFloats entries = boxes.entries(node, child, tMin, reach);
         const unsigned lanes = lanesMet(entries);
-        if (lanes == 0) continue;
-        const float entry = nearestEntry(entries);
-        int slot = pendingCount++;
-        for (; slot > firstMet && pending[slot - 1].entry < entry; --slot)
-          pending[slot] = pending[slot - 1];
-        pending[slot] = {node.offset[child], node.primitiveCount[child], lanes, entry};
+        if (lanes != 0)
+          pending.push(
+              {node.offset[child], node.primitiveCount[child], lanes, nearestEntry(entries)});
       }
     }
     // The next kept child that some of its rays' hits since leave in reach.
-    while (pendingCount > 0 && !anyReaches(pending[pendingCount - 1], tMax)) --pendingCount;
-    if (pendingCount == 0) break;
-    current = pending[--pendingCount];
+    if (!pending.takeNext(current,
+                          [&](const PendingPacketChild& child) { return anyReaches(child, tMax); }))
+      break;
   }
   for (int lane = 0; lane < packet.size; ++lane)
     packet.costs[lane].nodesVisited += static_cast<std::uint64_t>(boxesTested[lane]);

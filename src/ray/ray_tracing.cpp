@@ -205,12 +205,27 @@ LightSample SingleRayChoices::aimAt(const Light& light, const Vec3& point, int) 
   return light.illuminate(point);
 }
 
+namespace {
+
+// A primary ray whose search of the scene found `hit` (nullptr: nothing) at
+// `searchCost`: counted, with its cost, then shaded.
+SampleResult shadeSearchedPrimary(const TracingContext& context, const Ray& ray, const Hit* hit,
+                                  const IntersectionCounters& searchCost, PathChoices& choices,
+                                  TraceCounters& counters, RayTree* tree) {
+  ++counters.primaryRays;
+  counters.intersections += searchCost;
+  return shadeFirstHit(context, ray, hit, choices, counters, tree);
+}
+
+}  // namespace
+
 SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathChoices& choices,
                           TraceCounters& counters, RayTree* tree) {
-  ++counters.primaryRays;
   Hit hit;
-  const bool found = context.intersector.nearest(ray, 0.0f, hit, counters.intersections);
-  return shadeFirstHit(context, ray, found ? &hit : nullptr, choices, counters, tree);
+  IntersectionCounters searchCost;
+  const bool found = context.intersector.nearest(ray, 0.0f, hit, searchCost);
+  return shadeSearchedPrimary(context, ray, found ? &hit : nullptr, searchCost, choices, counters,
+                              tree);
 }
 
 SampleResult shadeFirstHit(const TracingContext& context, const Ray& ray, const Hit* hit,
@@ -324,43 +339,37 @@ void sampleAdaptively(TileTrace& tile, const RenderSettings& settings, const Tra
 
 namespace {
 
-// Whether every pixel places its samples alike, with nothing random: at its
-// centre, or on the same regular grid.
-bool placesSamplesAlike(const PixelSampling& sampling) {
-  return sampling.pattern == SamplePattern::None || sampling.pattern == SamplePattern::Regular;
-}
-
 // The primary hits of a row of a tile, found a packet of rays at a time
 // (bvh.hpp) before the row is shaded. Where every pixel places its samples
 // alike, a row's samples in order lie side by side and their rays are
 // coherent: eight neighbouring pixels' centres, or the grid of one or two.
 class RowOfPrimaryHits {
  public:
-  RowOfPrimaryHits(const TracingContext& context, const ViewFrame& view, const PixelRect& area)
-      : context_(context), view_(view), area_(area) {}
+  // `offsets`: where every pixel of the tile places its samples.
+  RowOfPrimaryHits(const TracingContext& context, const ViewFrame& view, const PixelRect& area,
+                   const std::vector<Vec2>& offsets)
+      : context_(context), view_(view), area_(area), offsets_(offsets) {}
 
-  // Sample i of the pixel, at offsets[i] as in every pixel, traced as
-  // tracePrimary traces it, from the hit found with the rest of its row's.
-  SampleResult trace(const glm::ivec2& pixel, int i, const std::vector<Vec2>& offsets,
-                     TraceCounters& counters, RayTree* tree) {
-    if (pixel.y != row_) findHits(pixel.y, offsets);
-    const std::size_t sample =
-        static_cast<std::size_t>(pixel.x - area_.x0) * offsets.size() + static_cast<std::size_t>(i);
+  // Sample i of the pixel traced as tracePrimary traces it, from the hit
+  // found with the rest of its row's.
+  SampleResult trace(const glm::ivec2& pixel, int i, TraceCounters& counters, RayTree* tree) {
+    if (pixel.y != row_) findHits(pixel.y);
+    const std::size_t sample = static_cast<std::size_t>(pixel.x - area_.x0) * offsets_.size() +
+                               static_cast<std::size_t>(i);
     const RayPacket& packet = packets_[sample / kPacketSize];
     const std::size_t lane = sample % kPacketSize;
-    ++counters.primaryRays;
-    counters.intersections += packet.costs[lane];
     SingleRayChoices single;
-    return shadeFirstHit(context_, packet.rays[lane],
-                         packet.found[lane] ? &packet.hits[lane] : nullptr, single, counters, tree);
+    return shadeSearchedPrimary(context_, packet.rays[lane],
+                                packet.found[lane] ? &packet.hits[lane] : nullptr,
+                                packet.costs[lane], single, counters, tree);
   }
 
  private:
-  void findHits(int y, const std::vector<Vec2>& offsets) {
+  void findHits(int y) {
     row_ = y;
     packets_.clear();
     for (int x = area_.x0; x < area_.x1; ++x) {
-      for (const Vec2& offset : offsets) {
+      for (const Vec2& offset : offsets_) {
         if (packets_.empty() || packets_.back().size == kPacketSize) packets_.emplace_back();
         RayPacket& packet = packets_.back();
         const Vec2 raster = Vec2(glm::ivec2(x, y)) + offset;
@@ -373,6 +382,7 @@ class RowOfPrimaryHits {
   const TracingContext& context_;
   const ViewFrame& view_;
   PixelRect area_;
+  const std::vector<Vec2>& offsets_;
   int row_ = -1;
   std::vector<RayPacket> packets_;
 };
@@ -397,13 +407,11 @@ RenderResult WhittedRayTracer::render(const Scene& scene, const RenderSettings& 
       samplePositions(sampling.pattern, sampling.samples, rng, offsets);
       return offsets;
     };
-    if (placesSamplesAlike(sampling)) {
-      RowOfPrimaryHits row(context, view, tile.area());
-      return tracePixels(
-          tile, settings.seed, place,
-          [&](const glm::ivec2& pixel, int i, Rng&, TraceCounters& counters, RayTree* tree) {
-            return row.trace(pixel, i, offsets, counters, tree);
-          });
+    if (placesAlikeInEveryPixel(sampling.pattern)) {
+      RowOfPrimaryHits row(context, view, tile.area(), offsets);
+      return tracePixels(tile, settings.seed, place,
+                         [&](const glm::ivec2& pixel, int i, Rng&, TraceCounters& counters,
+                             RayTree* tree) { return row.trace(pixel, i, counters, tree); });
     }
     tracePixels(
         tile, settings.seed, place,
