@@ -273,9 +273,8 @@ std::optional<OffCounts> offCountsAsAssimpReadsThem(std::string_view text) {
 }
 
 // Whether the count written as `digits` exceeds `most`, however many digits
-// it has. No digits read as 0.
+// it has.
 bool countBeyond(std::string_view digits, std::uint64_t most) {
-  if (digits.empty()) return false;
   const std::optional<std::uint64_t> count = countIn(digits);
   return !count || *count > most;
 }
@@ -329,8 +328,9 @@ void checkPlyHeader(std::string_view start, std::uintmax_t fileSize) {
 }
 
 void checkOffHeader(std::string_view start, std::uintmax_t fileSize) {
+  // Assimp refuses a header without both counts (it reads no digits as 0).
   const std::optional<OffCounts> counts = offCountsAsAssimpReadsThem(start);
-  if (!counts) return;  // Assimp says why
+  if (!counts || counts->vertices.empty() || counts->faces.empty()) return;
   // A vertex or a face line holds at least a digit and its line's end.
   constexpr std::uint64_t kLeastLine = 2;
   const std::uintmax_t body = fileSize - std::min<std::uintmax_t>(counts->bodyStart, fileSize);

@@ -172,8 +172,9 @@ TEST(OffHeader, FindsTheCountsWhereverTheReaderDoes) {
     huge.replace(huge.rfind("3 1"), 3, "3 3000000000");
     EXPECT_NE(offProblem(huge + body), "") << huge;
   }
-  EXPECT_EQ(offProblem("OFF\n\n"), "");    // no counts: Assimp refuses it
-  EXPECT_EQ(offProblem("solid x\n"), "");  // not an OFF header: Assimp refuses it
+  EXPECT_EQ(offProblem("OFF\n\n"), "");                // no counts: Assimp refuses it
+  EXPECT_EQ(offProblem("OFF\nx 3000000000 0\n"), "");  // no vertices: Assimp refuses it
+  EXPECT_EQ(offProblem("solid x\n"), "");              // not an OFF header: Assimp refuses it
 }
 
 }  // namespace
