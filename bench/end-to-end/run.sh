@@ -61,8 +61,12 @@ grep -q '^CMAKE_INTERPROCEDURAL_OPTIMIZATION:.*=OFF' "$build/CMakeCache.txt" 2>/
   echo "warning: $build is built without link-time optimisation" >&2
 mkdir -p "$out"
 
-# POV-Ray's whole process on the spheres at 800x600 less its start-up; $1
-# names the run, the rest are its anti-aliasing options.
+# POV-Ray's whole process on the spheres at 800x600, then its start-up
+# ("whole start_up"); $1 names the run, the rest are its anti-aliasing
+# options. Its start-up is mostly its front end's waits of a tenth of a
+# second, which the load shifts from run to run, so the peer's time is the
+# best whole less the best start-up (best_peer): the best of each run's
+# difference would take the run whose start-up happened to wait longest.
 povray_run() {
   local name="$1" start_up whole
   shift
@@ -71,7 +75,7 @@ povray_run() {
     +O"$out/povray-start-up.png" "${options[@]}" +W1 +H1 -A)"
   whole="$(wall_seconds "$out/$name.log" povray +Ibench/spheres/spheres.pov \
     +O"$out/$name.png" "${options[@]}" +W800 +H600 "$@")"
-  awk -v whole="$whole" -v start_up="$start_up" 'BEGIN { printf "%.3f\n", whole - start_up }'
+  echo "$whole $start_up"
 }
 
 # The 100,000-triangle mesh without normals (made once) in a scene without
@@ -89,11 +93,18 @@ for row in "${rows[@]}"; do
 done
 # Times a row's render (its name, then the options of `rise render`) by RISE
 # and, when there is one, by the baseline, into rise_time and baseline_time
-# ("wall render_seconds"). Each time is taken into a variable first: a
-# failure inside $(...) given as an argument would go unnoticed.
+# ("wall render_seconds"). The two take turns going first, run by run, so
+# that neither gains from the order (a warm cache, a processor's clock
+# already raised). Each time is taken into a variable first: a failure
+# inside $(...) given as an argument would go unnoticed.
 render_row() {
-  rise_time="$(timed_render "$rise" "$@")"
   baseline_time=""
+  if [[ -n "$baseline" ]] && ((run % 2 == 0)); then
+    baseline_time="$(timed_render "$baseline/rise" "$1-baseline" "${@:2}")"
+    rise_time="$(timed_render "$rise" "$@")"
+    return
+  fi
+  rise_time="$(timed_render "$rise" "$@")"
   [[ -z "$baseline" ]] || baseline_time="$(timed_render "$baseline/rise" "$1-baseline" "${@:2}")"
 }
 # Appends a run's times (RISE's, the baseline's, the peer's) to a row.
@@ -124,10 +135,14 @@ run_rows() {
     record "$algorithm" "$llvmpipe"
   done
 }
+# How busy the machine was: a run is quiet when nothing else took the cores.
+load_average() { cut -d' ' -f1-3 /proc/loadavg; }
+load_before="$(load_average)"
 for ((run = 1; run <= runs; ++run)); do
   echo "run $run of $runs" >&2
   run_rows
 done
+load_after="$(load_average)"
 
 # The best of a row's runs: RISE's or the baseline's (the array $1) wall time
 # (field 3 = 1) or render_seconds (2), the peer's.
@@ -135,7 +150,13 @@ best_rise() {
   local -n times="$1"
   cut -d' ' -f"$3" <<<"${times[$2]}" | grep . | smallest
 }
-best_peer() { grep . <<<"${peer_times[$1]}" | smallest | awk '{ printf "%.3f\n", $1 }'; }
+# The peer's best time, or for POV-Ray ("whole start_up" a run) its best
+# whole less its best start-up.
+best_peer() {
+  awk 'NF && (!n++ || $1 < whole) { whole = $1 }
+       NF > 1 && (!m++ || $2 < start_up) { start_up = $2 }
+       END { printf "%.3f\n", whole - start_up }' <<<"${peer_times[$1]}"
+}
 
 declare -A work=(
   [spheres]="Whitted, 11 spheres + checker plane, 800x600, 1 spp"
@@ -178,6 +199,7 @@ print_table() {
 
 echo
 echo "$(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores, $threads threads, best of $runs"
+echo "load average (1, 5, 15 min) before the runs: $load_before; after: $load_after"
 if [[ -n "$baseline" ]]; then
   echo
   echo "baseline, $baseline:"

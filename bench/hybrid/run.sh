@@ -32,23 +32,33 @@ require_count --threads "$threads" 1
 make_mesh_once "$out/bumpy-sphere.ply"
 cp bench/hybrid/million-mirror.yaml bench/hybrid/million-matte.yaml "$out/"
 
-# Renders one row $runs times ($1: a file name, then rise's options); prints
-# the best render_seconds and leaves the statistics of the best run in
-# $out/$1.json.
-best_render() {
-  local name="$1" run seconds best=""
+# Renders once as $1 (the rest being rise's arguments) and keeps the
+# statistics as $out/$1.json when its render_seconds is the best yet.
+render_once() {
+  local name="$1" seconds best=""
   shift
+  "$build/rise" render -o "$out/$name.png" --threads "$threads" --stats "$out/$name.run.json" \
+    "$@" >"$out/$name.log" 2>&1 || die "RISE failed; see $out/$name.log"
+  seconds="$(json_value "$out/$name.run.json" render_seconds 4)"
+  [[ ! -f "$out/$name.json" ]] || best="$(json_value "$out/$name.json" render_seconds 4)"
+  if [[ -z "$best" ]] || awk -v a="$seconds" -v b="$best" 'BEGIN { exit !(a < b) }'; then
+    mv "$out/$name.run.json" "$out/$name.json"
+  else
+    rm "$out/$name.run.json"
+  fi
+}
+
+# Whitted's and the hybrid's renders of a row ($1 names it, the rest are
+# rise's arguments), taking turns run by run, so that the load of a shared
+# machine falls on both alike.
+render_pair() {
+  local name="$1" run
+  shift
+  rm -f "$out/$name-ray-tracing.json" "$out/$name-hybrid.json"
   for ((run = 1; run <= runs; ++run)); do
-    "$build/rise" render -o "$out/$name.png" --threads "$threads" --stats "$out/$name.run.json" \
-      "$@" >"$out/$name.log" 2>&1 || die "RISE failed; see $out/$name.log"
-    seconds="$(json_value "$out/$name.run.json" render_seconds 4)"
-    if [[ -z "$best" ]] || awk -v a="$seconds" -v b="$best" 'BEGIN { exit !(a < b) }'; then
-      best="$seconds"
-      mv "$out/$name.run.json" "$out/$name.json"
-    fi
+    render_once "$name-ray-tracing" "$@" -a ray-tracing
+    render_once "$name-hybrid" "$@" -a hybrid
   done
-  rm -f "$out/$name.run.json"
-  echo "$best"
 }
 
 share() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.0f%%", 100 * a / b }'; }
@@ -69,9 +79,9 @@ for row in "${SCENES[@]}"; do
   for samples in 1 16; do
     sampling=()
     ((samples > 1)) && sampling=(--samples "$samples" --pattern jittered)
-    whitted="$(best_render "$name-$samples-ray-tracing" "$scene" -a ray-tracing "${sampling[@]}")"
-    hybrid="$(best_render "$name-$samples-hybrid" "$scene" -a hybrid "${sampling[@]}")"
+    render_pair "$name-$samples" "$scene" "${sampling[@]}"
     w="$out/$name-$samples-ray-tracing.json" h="$out/$name-$samples-hybrid.json"
+    whitted="$(json_value "$w" render_seconds 4)" hybrid="$(json_value "$h" render_seconds 4)"
     lines+=("$(printf '| %-26s | %7s | %11s | %10s | %6s | %7s | %9s | %9s | %8s |' "$label" \
       "$samples" "$whitted" "$hybrid" "$(ratio "$whitted" "$hybrid")" \
       "$(share "$(json_value "$w" primary_rays 0)" "$(json_value "$w" rays 0)")" \
