@@ -207,13 +207,11 @@ LightSample SingleRayChoices::aimAt(const Light& light, const Vec3& point, int) 
 
 namespace {
 
-// A primary ray whose search of the scene found `hit` (nullptr: nothing) at
-// `searchCost`: counted, with its cost, then shaded.
+// A primary ray whose search of the scene found `hit` (nullptr: nothing),
+// the search's cost already counted: counted, then shaded.
 SampleResult shadeSearchedPrimary(const TracingContext& context, const Ray& ray, const Hit* hit,
-                                  const IntersectionCounters& searchCost, PathChoices& choices,
-                                  TraceCounters& counters, RayTree* tree) {
+                                  PathChoices& choices, TraceCounters& counters, RayTree* tree) {
   ++counters.primaryRays;
-  counters.intersections += searchCost;
   return shadeFirstHit(context, ray, hit, choices, counters, tree);
 }
 
@@ -222,10 +220,8 @@ SampleResult shadeSearchedPrimary(const TracingContext& context, const Ray& ray,
 SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathChoices& choices,
                           TraceCounters& counters, RayTree* tree) {
   Hit hit;
-  IntersectionCounters searchCost;
-  const bool found = context.intersector.nearest(ray, 0.0f, hit, searchCost);
-  return shadeSearchedPrimary(context, ray, found ? &hit : nullptr, searchCost, choices, counters,
-                              tree);
+  const bool found = context.intersector.nearest(ray, 0.0f, hit, counters.intersections);
+  return shadeSearchedPrimary(context, ray, found ? &hit : nullptr, choices, counters, tree);
 }
 
 SampleResult shadeFirstHit(const TracingContext& context, const Ray& ray, const Hit* hit,
@@ -358,10 +354,11 @@ class RowOfPrimaryHits {
                                static_cast<std::size_t>(i);
     const RayPacket& packet = packets_[sample / kPacketSize];
     const std::size_t lane = sample % kPacketSize;
+    counters.intersections += packet.costs[lane];
     SingleRayChoices single;
     return shadeSearchedPrimary(context_, packet.rays[lane],
-                                packet.found[lane] ? &packet.hits[lane] : nullptr,
-                                packet.costs[lane], single, counters, tree);
+                                packet.found[lane] ? &packet.hits[lane] : nullptr, single, counters,
+                                tree);
   }
 
  private:
