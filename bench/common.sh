@@ -89,6 +89,15 @@ wall_seconds() {
   awk -v ns="$((end - start))" 'BEGIN { printf "%.3f\n", ns / 1e9 }'
 }
 
+# The seconds POV-Ray's statistics (its log, $1) give a stage ($2: Parse,
+# Bounding, Trace): the number in parentheses on the line "$2 Time:".
+povray_seconds() {
+  local seconds
+  seconds="$(sed -n "s/.*$2 Time:.*(\([0-9.]*\) seconds).*/\1/p" "$1")"
+  [[ -n "$seconds" ]] || die "no '$2 Time' in POV-Ray's statistics; see $1"
+  echo "$seconds"
+}
+
 # Renders with the rise executable $1 into $out/$2.png on $threads threads,
 # the rest being rise's arguments; prints "wall render_seconds".
 # shellcheck disable=SC2154 # threads is the caller's, as out is.

@@ -1,7 +1,7 @@
-#include "core/memory_reuse.hpp"
+#include "core/process_memory.hpp"
 #include "run.hpp"
 
 int main(int argc, char** argv) {
-  rise::keepFreedMemoryForReuse();
+  rise::setUpProcessMemory();
   return rise::cli::run(argc, argv);
 }

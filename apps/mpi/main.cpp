@@ -12,7 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
-#include "core/memory_reuse.hpp"
+#include "core/process_memory.hpp"
 #include "distributed_compare.hpp"
 #include "distributed_render.hpp"
 #include "job.hpp"
@@ -76,7 +76,7 @@ int run(int argc, char** argv, int rank, int ranks) {
 }  // namespace rise::mpi
 
 int main(int argc, char** argv) {
-  rise::keepFreedMemoryForReuse();
+  rise::setUpProcessMemory();
   MPI_Init(&argc, &argv);
   int rank = 0;
   int ranks = 1;

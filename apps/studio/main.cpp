@@ -9,7 +9,7 @@
 #include <iostream>
 #include <memory>
 
-#include "core/memory_reuse.hpp"
+#include "core/process_memory.hpp"
 #include "script.hpp"
 #include "studio.hpp"
 #include "window.hpp"
@@ -26,7 +26,7 @@ constexpr const char* kUsage =
 }  // namespace
 
 int main(int argc, char** argv) {
-  rise::keepFreedMemoryForReuse();
+  rise::setUpProcessMemory();
   std::filesystem::path scene, scriptPath;
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--script") == 0 && i + 1 < argc) {

@@ -70,14 +70,12 @@ time_rise() {
 # Prints the trace seconds of one POV-Ray run: the number in parentheses on the
 # "Trace Time:" line of its statistics, which POV-Ray writes to stderr.
 time_povray() {
-  local image="$out/povray$suffix.png" log="$out/povray$suffix.log" seconds
+  local image="$out/povray$suffix.png" log="$out/povray$suffix.log"
   if ! povray +Ibench/spheres/spheres.pov +O"$image" +FN File_Gamma=sRGB +W"$WIDTH" \
     +H"$HEIGHT" +WT"$THREADS" -D "${povray_antialiasing[@]}" >"$log" 2>&1; then
     die "POV-Ray failed; see $log"
   fi
-  seconds="$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$log")"
-  [[ -n "$seconds" ]] || die "no 'Trace Time' in POV-Ray's statistics; see $log"
-  echo "$seconds"
+  povray_seconds "$log" Trace
 }
 
 # Prints the smallest of RUNS timings made by the function named $1.
