@@ -25,7 +25,7 @@
 // them meets, and only those rays go on in it; each ray keeps its own
 // nearest hit, the same as alone (I. Wald, P. Slusallek, C. Benthin and
 // M. Wagner, "Interactive Rendering with Coherent Ray Tracing", Computer
-// Graphics Forum 20(3), 2001). A shadow ray stops at the first opaque
+// Graphics Forum 20(3), 2001; bvh_packet_traversal.cpp). A shadow ray stops at the first opaque
 // primitive it meets. A ray with a NaN or infinite component meets nothing
 // (its box tests would find it in every box, empty ones too).
 #pragma once

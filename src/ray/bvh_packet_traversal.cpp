@@ -1,0 +1,174 @@
+// A packet's traversal of the BVH (I. Wald, P. Slusallek, C. Benthin and
+// M. Wagner, "Interactive Rendering with Coherent Ray Tracing", Computer
+// Graphics Forum 20(3), 2001): the primary rays of neighbouring pixels are
+// nearly parallel and meet nearly the same boxes, so eight of them go down
+// the tree together, loading each node once for all eight and testing one
+// child's box against the eight rays at once. The packet enters every child
+// that any of its rays meets, nearest first, and a child keeps the lanes of
+// the rays that meet it: only those test its children and its primitives.
+// Each ray keeps its own nearest hit, so that it finds what it would alone.
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cstdint>
+
+#if defined(__AVX__)
+#include <immintrin.h>
+#endif
+
+#include "ray/bvh_traversal.hpp"
+
+namespace rise {
+namespace {
+
+using namespace bvh_traversal;
+
+// Eight floats, for the eight rays of a packet: one AVX register, or two
+// of four where the processor has no wider ones. Without AVX, GCC warns that
+// passing them changes the calling convention; they never leave this file.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi"
+#endif
+using EightFloats = float __attribute__((vector_size(8 * sizeof(float))));
+using EightInts = std::int32_t __attribute__((vector_size(8 * sizeof(std::int32_t))));
+static_assert(kPacketSize == 8, "a packet's rays fill one EightFloats");
+
+EightFloats broadcastToEight(float value) { return EightFloats{} + value; }
+
+// The rays of a packet made ready for box tests, lane by lane as BoxRay
+// makes one ray: the same arithmetic, so that each lane finds the same
+// entries as its ray alone would. Here the eight rays test one box at once,
+// where BoxRay's one ray tests four.
+class BoxPacket {
+ public:
+  explicit BoxPacket(const RayPacket& packet) {
+    for (int lane = 0; lane < kPacketSize; ++lane) {
+      // Lanes past the packet's rays repeat its first; no child is entered for them.
+      const Ray& ray = packet.rays[lane < packet.size ? lane : 0];
+      for (int axis = 0; axis < 3; ++axis) {
+        origin_[axis][lane] = ray.origin[axis];
+        inverseDirection_[axis][lane] = 1.0f / ray.direction[axis];
+        entersByMax_[axis][lane] = inverseDirection_[axis][lane] < 0.0f ? -1 : 0;
+      }
+    }
+  }
+
+  // Where each lane's ray enters the child's box within (tMin, its tMax), or
+  // infinity where it misses it there.
+  [[gnu::always_inline]] EightFloats entries(const WideBvhNode& node, int child, float tMin,
+                                             EightFloats tMax) const {
+    EightFloats enter = broadcastToEight(tMin);
+    EightFloats exit = broadcastToEight(kInfinity);
+    for (int axis = 0; axis < 3; ++axis) {
+      const EightFloats lower = broadcastToEight(node.lower[axis][child]);
+      const EightFloats upper = broadcastToEight(node.upper[axis][child]);
+      const EightFloats nearFaces = entersByMax_[axis] != 0 ? upper : lower;
+      const EightFloats farFaces = entersByMax_[axis] != 0 ? lower : upper;
+      enter = maximum((nearFaces - origin_[axis]) * inverseDirection_[axis], enter);
+      exit = minimum((farFaces - origin_[axis]) * inverseDirection_[axis], exit);
+    }
+    return enter <= minimum(exit * kRobustExit, tMax) ? enter : broadcastToEight(kInfinity);
+  }
+
+ private:
+  EightFloats origin_[3];
+  EightFloats inverseDirection_[3];
+  EightInts entersByMax_[3];
+};
+
+// The lanes whose entries are finite, the rays that meet a box.
+unsigned lanesMet(EightFloats entries) {
+  const EightInts met = entries != broadcastToEight(kInfinity);
+#if defined(__AVX__)
+  return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(met)));
+#else
+  unsigned lanes = 0;
+  for (int lane = 0; lane < kPacketSize; ++lane) lanes |= (met[lane] != 0 ? 1u : 0u) << lane;
+  return lanes;
+#endif
+}
+
+// A child that a packet's traversal has yet to enter, and the lanes whose
+// rays meet it, the nearest at `entry`.
+struct PendingPacketChild {
+  std::uint32_t offset;          // the node, or the leaf's first primitive
+  std::uint32_t primitiveCount;  // 0 for an inner node
+  unsigned lanes;
+  float entry;
+};
+
+// The nearest of eight entries.
+float nearestEntry(EightFloats entries) {
+  float nearest = entries[0];
+  for (int lane = 1; lane < kPacketSize; ++lane) nearest = std::min(nearest, entries[lane]);
+  return nearest;
+}
+
+// All ones in the lanes of `lanes`' bits, zero in the others.
+EightInts laneMask(unsigned lanes) {
+  const EightInts bits{1, 2, 4, 8, 16, 32, 64, 128};
+  return (bits & static_cast<std::int32_t>(lanes)) != 0;
+}
+
+// Whether a kept child is still in reach of one of its rays: the nearest
+// hit of one of them is beyond the child's nearest entry.
+bool anyReaches(const PendingPacketChild& child, EightFloats tMax) {
+  for (unsigned lanes = child.lanes; lanes != 0; lanes &= lanes - 1)
+    if (child.entry <= tMax[std::countr_zero(lanes)]) return true;
+  return false;
+}
+
+}  // namespace
+
+// The packet goes down the tree as one ray does, nearest child first, into
+// every child that any of its rays meets; a child keeps the lanes of the
+// rays that meet it, and only those test its children and its primitives.
+// Each ray keeps its own nearest hit, so that it finds the same as alone.
+void Bvh::nearestOfPacket(RayPacket& packet, float tMin) const {
+  std::array<NearestHit, kPacketSize> nearest;
+  unsigned traversing = 0;
+  EightFloats tMax = broadcastToEight(kInfinity);
+  for (int lane = 0; lane < packet.size; ++lane) {
+    nearest[lane] = NearestHit(packet.hits[lane]);
+    packet.found[lane] = offerUnbounded(packet.rays[lane], tMin, nearest[lane], packet.costs[lane]);
+    tMax[lane] = packet.hits[lane].t;
+    if (!nodes_.empty() && isFinite(packet.rays[lane])) traversing |= 1u << lane;
+  }
+  if (traversing == 0) return;
+  const BoxPacket boxes(packet);
+  EightInts boxesTested{};
+  PendingChildren<PendingPacketChild> pending;
+  PendingPacketChild current{0, 0, traversing, tMin};  // the root
+  while (true) {
+    if (current.primitiveCount > 0) {
+      for (unsigned lanes = current.lanes; lanes != 0; lanes &= lanes - 1) {
+        const int lane = std::countr_zero(lanes);
+        packet.found[lane] |= offerLeaf(current.offset, current.primitiveCount, packet.rays[lane],
+                                        tMin, nearest[lane], packet.costs[lane]);
+        tMax[lane] = packet.hits[lane].t;
+      }
+    } else {
+      const WideBvhNode& node = nodes_[current.offset];
+      // The lanes not in this child reach no box.
+      const EightInts active = laneMask(current.lanes);
+      boxesTested += active & kWideBvhWidth;
+      const EightFloats reach = active != 0 ? tMax : broadcastToEight(-kInfinity);
+      pending.openNode();
+      for (int child = 0; child < kWideBvhWidth; ++child) {
+        const EightFloats entries = boxes.entries(node, child, tMin, reach);
+        const unsigned lanes = lanesMet(entries);
+        if (lanes != 0)
+          pending.push(
+              {node.offset[child], node.primitiveCount[child], lanes, nearestEntry(entries)});
+      }
+    }
+    // The next kept child that some of its rays' hits since leave in reach.
+    if (!pending.takeNext(current,
+                          [&](const PendingPacketChild& child) { return anyReaches(child, tMax); }))
+      break;
+  }
+  for (int lane = 0; lane < packet.size; ++lane)
+    packet.costs[lane].nodesVisited += static_cast<std::uint64_t>(boxesTested[lane]);
+}
+
+}  // namespace rise
