@@ -67,8 +67,8 @@ time_rise() {
   json_seconds "$stats" render_seconds
 }
 
-# Prints the trace seconds of one POV-Ray run: the number in parentheses on the
-# "Trace Time:" line of its statistics, which POV-Ray writes to stderr.
+# Prints the trace seconds of one POV-Ray run, from the statistics it writes
+# to stderr.
 time_povray() {
   local image="$out/povray$suffix.png" log="$out/povray$suffix.log"
   if ! povray +Ibench/spheres/spheres.pov +O"$image" +FN File_Gamma=sRGB +W"$WIDTH" \

@@ -102,10 +102,8 @@ class BoxRay {
   // makes an infinite inverse; for an origin on a box's face that gives
   // 0 * infinity = NaN, which max and min drop (max(a, b) is a > b ? a : b,
   // which is b when a is NaN), so that the ray lying in the face counts as
-  // inside. The exit is pushed out by a few ulps (T. Ize,
-  // "Robust BVH Ray Traversal", JCGT 2(2), 2013), so that rounding never
-  // loses a box the ray grazes. Always inlined: called apart, it would pass
-  // its result through memory.
+  // inside. The exit is pushed out by kRobustExit. Always inlined: called
+  // apart, it would pass its result through memory.
   [[gnu::always_inline]] FourFloats entries(const WideBvhNode& node, float tMin, float tMax) const {
     FourFloats enter = broadcast(tMin);
     FourFloats exit = broadcast(kInfinity);

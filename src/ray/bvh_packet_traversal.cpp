@@ -36,7 +36,7 @@ static_assert(kPacketSize == 8, "a packet's rays fill one EightFloats");
 EightFloats broadcastToEight(float value) { return EightFloats{} + value; }
 
 // The rays of a packet made ready for box tests, lane by lane as BoxRay
-// makes one ray: the same arithmetic, so that each lane finds the same
+// (bvh.cpp) makes one ray: the same arithmetic, so that each lane finds the same
 // entries as its ray alone would. Here the eight rays test one box at once,
 // where BoxRay's one ray tests four.
 class BoxPacket {
