@@ -81,17 +81,27 @@ class NearestHit {
   NearestHit() = default;  // to be given its hit
   explicit NearestHit(Hit& hit) : hit_(&hit) {}
 
-  // Offers the hit of one primitive, found by `intersect(candidate)`.
+  // Offers the hit of one primitive, found by `intersect(hit)`, which
+  // overwrites the hit it finds nearer. The hit is tested in place and put
+  // back field by field when it loses a tie: a copy of the whole, read just
+  // after the test wrote it field by field, would wait for those writes.
   template <typename Intersect>
   bool offer(PrimitiveRef ref, Intersect&& intersect) {
-    Hit candidate = *hit_;
-    candidate.t = bvh_traversal::nextAbove(hit_->t);  // an equal t too
-    if (!intersect(candidate)) return false;
-    if (candidate.t == hit_->t && !(found_ && comesBefore(ref, ref_))) return false;
-    *hit_ = candidate;
-    ref_ = ref;
-    found_ = true;
-    return true;
+    const float t = hit_->t;
+    const Shape* const shape = hit_->shape;
+    const int primitive = hit_->primitive;
+    const Vec2 barycentric = hit_->barycentric;
+    hit_->t = bvh_traversal::nextAbove(t);  // an equal t too
+    if (intersect(*hit_) && (hit_->t != t || (found_ && comesBefore(ref, ref_)))) {
+      ref_ = ref;
+      found_ = true;
+      return true;
+    }
+    hit_->t = t;
+    hit_->shape = shape;
+    hit_->primitive = primitive;
+    hit_->barycentric = barycentric;
+    return false;
   }
 
  private:

@@ -50,19 +50,25 @@ const AlgorithmDescription& WhittedRayTracer::description() const {
 // side the ray came from, and whether the ray is entering the solid.
 struct ShadingFrame {
   SurfacePoint surface;
-  Vec3 normal;         // the geometric normal, unit, on the ray's side of the surface
-  Vec3 shadingNormal;  // the smooth normal for shading, on the same side
-  Vec3 toViewer;       // unit, back along the ray
-  float time;          // the ray's instant, which the rays it spawns keep
-  bool entering;
+  Vec3 normal{0.0f};         // the geometric normal, unit, on the ray's side of the surface
+  Vec3 shadingNormal{0.0f};  // the smooth normal for shading, on the same side
+  Vec3 toViewer{0.0f};       // unit, back along the ray
+  float time = 0.0f;         // the ray's instant, which the rays it spawns keep
+  bool entering = false;
 };
 
 namespace {
 
+// Built where it is returned, not copied there: a surface point is large,
+// and copying it just after the shape wrote it field by field would wait for
+// those writes to reach the cache.
+SurfacePoint surfaceSeen(const Ray& ray, const Hit& hit, const Material& material) {
+  return material.readsTextureFrame() ? hit.shape->surfaceAt(ray, hit)
+                                      : hit.shape->pointAt(ray, hit);
+}
+
 ShadingFrame shadingFrame(const Ray& ray, const Hit& hit, const Material& material) {
-  ShadingFrame frame;
-  frame.surface =
-      material.readsTextureFrame() ? hit.shape->surfaceAt(ray, hit) : hit.shape->pointAt(ray, hit);
+  ShadingFrame frame{.surface = surfaceSeen(ray, hit, material)};
   frame.surface.shadingNormal = shadingNormal(material, frame.surface);
   frame.toViewer = -glm::normalize(ray.direction);
   frame.time = ray.time;

@@ -28,7 +28,11 @@ std::optional<Ray> shadowRay(const SurfacePoint& surface, const Vec3& sideNormal
     smooth = glm::dot(sideNormal, surface.normal) >= 0.0f ? interpolated : -interpolated;
   }
   if (glm::dot(smooth, toLight) <= 0.0f) return std::nullopt;
-  return Ray{shadowRayOrigin(surface, sideNormal) + kRayEpsilon * sideNormal, toLight, time};
+  // Made in place: a Ray made apart and copied in would be read back just
+  // after being written field by field, which waits for the writes.
+  return std::optional<Ray>(std::in_place,
+                            shadowRayOrigin(surface, sideNormal) + kRayEpsilon * sideNormal,
+                            toLight, time);
 }
 
 }  // namespace rise
