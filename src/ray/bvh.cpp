@@ -11,6 +11,7 @@
 #endif
 
 #include "ray/bvh_traversal.hpp"
+#include "scene/shapes/sphere.hpp"
 #include "scene/shapes/triangle.hpp"
 
 namespace rise {
@@ -159,28 +160,50 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Shape>>& shapes, int threads) {
   nodes_ = collapseBvh(built.nodes());
   primitives_.resize(built.primitives.size());
   inShares(primitives_.size(), threads, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const PrimitiveRef ref = built.primitives[i].ref();
-      std::array<Vec3, 3> corners{};
-      const bool isTriangle =
-          shapes_[ref.shape]->primitiveTriangle(static_cast<int>(ref.primitive), corners);
-      primitives_[i] = {ref, isTriangle, corners[0], corners[1] - corners[0],
-                        corners[2] - corners[0]};
-    }
+    for (std::size_t i = begin; i < end; ++i)
+      primitives_[i] = leafPrimitive(built.primitives[i].ref());
   });
+}
+
+Bvh::LeafPrimitive Bvh::leafPrimitive(PrimitiveRef ref) const {
+  const Shape& shape = *shapes_[ref.shape];
+  const auto index = static_cast<int>(ref.primitive);
+  LeafPrimitive primitive{ref, Kind::Other, {}};
+  std::array<Vec3, 3> corners{};
+  if (shape.primitiveTriangle(index, corners)) {
+    primitive.kind = Kind::Triangle;
+    primitive.triangle = {corners[0], corners[1] - corners[0], corners[2] - corners[0]};
+  } else if (shape.primitiveSphere(index, primitive.sphere.center,
+                                   primitive.sphere.radiusSquared)) {
+    primitive.kind = Kind::Sphere;
+  }
+  return primitive;
 }
 
 bool Bvh::intersectPrimitive(const LeafPrimitive& primitive, const Ray& ray, float tMin, Hit& hit,
                              IntersectionCounters& counters) const {
   const Shape& shape = *shapes_[primitive.ref.shape];
   const int index = static_cast<int>(primitive.ref.primitive);
-  if (!primitive.isTriangle) return shape.intersectPrimitive(index, ray, tMin, hit, counters);
-  ++counters.tests;
-  if (!intersectTriangleEdges(ray, primitive.corner, primitive.edge1, primitive.edge2, tMin, hit.t,
-                              hit.t, hit.barycentric))
-    return false;
+  switch (primitive.kind) {
+    case Kind::Triangle: {
+      ++counters.tests;
+      const TriangleEdges& triangle = primitive.triangle;
+      if (!intersectTriangleEdges(ray, triangle.corner, triangle.edge1, triangle.edge2, tMin, hit.t,
+                                  hit.t, hit.barycentric))
+        return false;
+      hit.primitive = index;
+      break;
+    }
+    case Kind::Sphere:
+      ++counters.tests;
+      if (!intersectSphere(ray, primitive.sphere.center, primitive.sphere.radiusSquared, tMin,
+                           hit.t, hit.t))
+        return false;
+      break;
+    case Kind::Other:
+      return shape.intersectPrimitive(index, ray, tMin, hit, counters);
+  }
   hit.shape = &shape;
-  hit.primitive = index;
   return true;
 }
 

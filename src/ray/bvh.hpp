@@ -11,9 +11,10 @@
 // surface area heuristic (bvh_builder.hpp), then collapsed into nodes of four
 // children whose boxes a ray tests at once (wide_bvh.hpp). The leaves keep
 // their triangles (Shape::primitiveTriangle) beside them, as a corner and two
-// edges, and test those themselves, sparing a call into the mesh, its vertex
-// indices and the edges' subtractions; other primitives are tested by their
-// shapes.
+// edges, and their spheres (Shape::primitiveSphere), as a centre and a
+// squared radius, and test those themselves, sparing a call into the shape
+// (for a mesh, its vertex indices and the edges' subtractions too); other
+// primitives are tested by their shapes.
 //
 // Traversal goes nearest child first: at an inner node the ray tests the
 // four children's boxes (slab test, with the ray's inverse direction
@@ -43,13 +44,25 @@ class NearestHit;
 
 class Bvh final : public Accelerator {
  public:
-  // A primitive as a leaf holds it.
-  struct LeafPrimitive {
-    PrimitiveRef ref;
-    bool isTriangle;  // tested here, on this corner and these edges
+  // A primitive as a leaf holds it: a triangle or a sphere tested here, on
+  // the geometry beside it, or any other tested by its shape.
+  enum class Kind : std::uint8_t { Triangle, Sphere, Other };
+  struct TriangleEdges {
     Vec3 corner;
     Vec3 edge1;
     Vec3 edge2;
+  };
+  struct SphereExtent {
+    Vec3 center;
+    float radiusSquared;
+  };
+  struct LeafPrimitive {
+    PrimitiveRef ref;
+    Kind kind;
+    union {
+      TriangleEdges triangle;
+      SphereExtent sphere;
+    };
   };
 
   // Builds on `threads` threads, 0 meaning one per hardware thread.
@@ -78,6 +91,7 @@ class Bvh final : public Accelerator {
   [[gnu::always_inline]] bool offerLeaf(std::uint32_t first, std::uint32_t count, const Ray& ray,
                                         float tMin, NearestHit& nearest,
                                         IntersectionCounters& counters) const;
+  LeafPrimitive leafPrimitive(PrimitiveRef ref) const;
   bool intersectPrimitive(const LeafPrimitive& primitive, const Ray& ray, float tMin, Hit& hit,
                           IntersectionCounters& counters) const;
 

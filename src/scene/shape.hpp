@@ -112,6 +112,13 @@ class Shape {
   virtual bool primitiveTriangle(int /*primitive*/, std::array<Vec3, 3>& /*corners*/) const {
     return false;
   }
+  // The same for a primitive that is a sphere standing still, tested as
+  // intersectSphere (shapes/sphere.hpp) on this centre and squared radius,
+  // recording t and the shape.
+  virtual bool primitiveSphere(int /*primitive*/, Vec3& /*center*/,
+                               float& /*radiusSquared*/) const {
+    return false;
+  }
 
   // Fills `out` (empty) with triangles covering the surface, for the
   // algorithms that draw polygons (raster/): finer as settings.level grows,

@@ -43,6 +43,10 @@ bool MappedShape::primitiveTriangle(int primitive, std::array<Vec3, 3>& corners)
   return shape_->primitiveTriangle(primitive, corners);
 }
 
+bool MappedShape::primitiveSphere(int primitive, Vec3& center, float& radiusSquared) const {
+  return shape_->primitiveSphere(primitive, center, radiusSquared);
+}
+
 void MappedShape::tessellate(const TessellationSettings& settings, Tessellation& out) const {
   shape_->tessellate(settings, out);
   for (SurfaceVertex& vertex : out.vertices)

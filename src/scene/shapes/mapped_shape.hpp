@@ -30,6 +30,7 @@ class MappedShape final : public Shape {
   bool intersectPrimitive(int primitive, const Ray& ray, float tMin, Hit& hit,
                           IntersectionCounters& counters) const override;
   bool primitiveTriangle(int primitive, std::array<Vec3, 3>& corners) const override;
+  bool primitiveSphere(int primitive, Vec3& center, float& radiusSquared) const override;
 
  private:
   std::unique_ptr<Shape> shape_;

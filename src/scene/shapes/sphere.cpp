@@ -4,7 +4,6 @@
 #include <cmath>
 #include <vector>
 
-#include "scene/shapes/quadratic.hpp"
 #include "scene/textures/surface_mapping.hpp"
 
 namespace rise {
@@ -21,22 +20,15 @@ Sphere::Sphere(Vec3 center, float radius, int material)
 
 bool Sphere::intersect(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& counters) const {
   ++counters.tests;
-  const Vec3 fromCenter = ray.origin - center_;
-  // Most rays start outside a sphere and go away from it, or miss it wide:
-  // tell them apart before solving anything.
-  const float halfB = glm::dot(fromCenter, ray.direction);
-  if (halfB > 0.0f && glm::dot(fromCenter, fromCenter) > radiusSquared_) return false;
-  float roots[2];
-  if (!solveLineAtDistance(fromCenter, ray.direction, radiusSquared_, roots[0], roots[1]))
-    return false;
-  for (float t : roots) {
-    if (t > tMin && t < hit.t) {
-      hit.t = t;
-      hit.shape = this;
-      return true;
-    }
-  }
-  return false;
+  if (!intersectSphere(ray, center_, radiusSquared_, tMin, hit.t, hit.t)) return false;
+  hit.shape = this;
+  return true;
+}
+
+bool Sphere::primitiveSphere(int /*primitive*/, Vec3& center, float& radiusSquared) const {
+  center = center_;
+  radiusSquared = radiusSquared_;
+  return true;
 }
 
 SurfacePoint Sphere::surfaceAt(const Ray& ray, const Hit& hit) const {
