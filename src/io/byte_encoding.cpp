@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 namespace rise {
 
@@ -36,11 +38,19 @@ float levelStartOf(int level, Encoding encoding) {
 ByteEncoder::ByteEncoder(Encoding encoding) {
   levelStarts_[0] = 0.0f;
   for (int level = 1; level < 256; ++level) levelStarts_[level] = levelStartOf(level, encoding);
+  levelStarts_[256] = std::numeric_limits<float>::infinity();
+  const auto levelOf = [&](float value) {
+    return std::upper_bound(levelStarts_.begin(), levelStarts_.end(), value) -
+           levelStarts_.begin() - 1;
+  };
   for (std::size_t range = 0; range < kRanges; ++range) {
-    const float lowest = std::bit_cast<float>(static_cast<std::uint32_t>(range << kRangeShift));
-    rangeLevels_[range] = static_cast<std::uint8_t>(
-        std::upper_bound(levelStarts_.begin(), levelStarts_.end(), lowest) - levelStarts_.begin() -
-        1);
+    const auto first = static_cast<std::uint32_t>(range << kRangeShift);
+    const auto lowest = levelOf(std::bit_cast<float>(first));
+    const float highest =
+        std::min(1.0f, std::bit_cast<float>(first + (std::uint32_t{1} << kRangeShift) - 1));
+    if (levelOf(highest) > lowest + 1)
+      throw std::logic_error("ByteEncoder: a range of values holds the start of two levels");
+    rangeLevels_[range] = static_cast<std::uint8_t>(lowest);
   }
 }
 

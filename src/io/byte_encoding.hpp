@@ -3,7 +3,8 @@
 // (sRGB's curve) and a rounding per value: the same level, found many times
 // faster. A value's leading bits (its exponent and the top of its mantissa)
 // pick a narrow range of values, whose lowest level a second table holds;
-// few ranges hold the start of a level, so one comparison or two finish.
+// no range holds the start of two levels, so one comparison, without a
+// branch, finishes.
 #pragma once
 
 #include <array>
@@ -27,9 +28,8 @@ class ByteEncoder {
   std::uint8_t operator()(float linear) const {
     // The zero comes first so that a NaN becomes black.
     const float value = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;
-    int level = rangeLevels_[std::bit_cast<std::uint32_t>(value) >> kRangeShift];
-    while (level < 255 && levelStarts_[level + 1] <= value) ++level;
-    return static_cast<std::uint8_t>(level);
+    const int level = rangeLevels_[std::bit_cast<std::uint32_t>(value) >> kRangeShift];
+    return static_cast<std::uint8_t>(level + (levelStarts_[level + 1] <= value ? 1 : 0));
   }
 
   // The smallest value stored as `level`.
@@ -40,7 +40,7 @@ class ByteEncoder {
   static constexpr int kRangeShift = 16;
   static constexpr std::size_t kRanges = (std::bit_cast<std::uint32_t>(1.0f) >> kRangeShift) + 1;
 
-  std::array<float, 256> levelStarts_;
+  std::array<float, 257> levelStarts_;             // and past the last level, infinity
   std::array<std::uint8_t, kRanges> rangeLevels_;  // the level of each range's lowest value
 };
 

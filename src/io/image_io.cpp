@@ -88,11 +88,12 @@ std::vector<std::uint8_t> rgbBytes(const Image& image, Encoding encoding) {
   return bytes;
 }
 
-// zlib's fastest level, every row given as its difference from the row above
-// (PNG's "up" filter): a rendered image comes out within a few percent of the
-// size that trying every filter on every row gives, in a quarter of the time.
+// zlib's fastest level on the rows as they are, unfiltered: a rendered image
+// comes out within a tenth of the size that trying every filter on every row
+// gives, in a fifth of the time, and faster than any one filter (the "up"
+// filter's zeros took zlib longer to match).
 constexpr int kPngCompressionLevel = 1;
-constexpr int kPngFilters = SPNG_FILTER_CHOICE_UP;
+constexpr int kPngFilters = SPNG_FILTER_CHOICE_NONE;
 
 void writePng(const Image& image, Encoding encoding, const std::filesystem::path& path,
               AtomicFile& file) {

@@ -4,7 +4,8 @@
 // nearest surface it hits (Intersect). There the colour is computed (Shade):
 //   - the Phong model's ambient light, and each light that a shadow ray from
 //     the point reaches: an opaque shape in the way blocks it, a transparent
-//     one filters it by its transmission and colour;
+//     one filters it by its transmission and colour (a light whose Phong
+//     terms are zero at the point sends no shadow ray);
 //   - the mirror ray, reflected about the normal, traced recursively and
 //     weighted by the material's `reflection`;
 //   - the refracted ray, bent by Snell's law with the relative index of the
@@ -149,7 +150,10 @@ class Recursion {
     return weight * trace(ray, depth + 1, kind, weight);
   }
 
-  // The Phong terms of every light that a shadow ray reaches.
+  // The Phong terms of every light that a shadow ray reaches. A light whose
+  // terms are zero at the point (clear glass has no diffuse term, and its
+  // sharp highlight is zero but near the mirror direction) sends no shadow
+  // ray: whatever reached the point, it would add nothing.
   Color directLight(const ShadingFrame& frame, const Material& material,
                     const SurfaceColors& colors, int depth) {
     Color color(0.0f);
@@ -158,13 +162,15 @@ class Recursion {
       const std::optional<Ray> shadow =
           shadowRay(frame.surface, frame.normal, sample.toLight, frame.time);
       if (!shadow) continue;
+      const Color lit = phongDirect(material, colors, frame.shadingNormal, frame.toViewer, sample);
+      if (lit == Color(0.0f)) continue;
       ++counters_.shadowRays;
       const Color visible = context_.intersector.transmittance(*shadow, 0.0f, sample.distance,
                                                                counters_.intersections);
       if (tree_) [[unlikely]]
         tellShadow(*shadow, *light, sample, visible, frame, material, colors);
       if (visible == Color(0.0f)) continue;
-      color += visible * phongDirect(material, colors, frame.shadingNormal, frame.toViewer, sample);
+      color += visible * lit;
     }
     return color;
   }
