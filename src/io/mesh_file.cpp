@@ -1,18 +1,20 @@
 #include "io/mesh_file.hpp"
 
+#include <assimp/cimport.h>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
 #include <array>
-#include <assimp/Importer.hpp>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <memory>
+#include <mutex>
 #include <new>
 #include <optional>
 #include <span>
@@ -20,6 +22,7 @@
 #include <system_error>
 #include <vector>
 
+#include "core/shared_library.hpp"
 #include "core/text.hpp"
 #include "io/file_limits.hpp"
 #include "io/model_headers.hpp"
@@ -28,6 +31,34 @@
 namespace rise {
 
 namespace {
+
+// Assimp's functions (its C interface), from its library, loaded when the
+// first model is read: a scene without one does not pay for loading it.
+struct AssimpFunctions {
+  SharedLibrary library{RISE_ASSIMP_LIBRARY};
+#define RISE_FROM_ASSIMP(name) RISE_LIBRARY_FUNCTION(library, name)
+  RISE_FROM_ASSIMP(aiIsExtensionSupported);
+  RISE_FROM_ASSIMP(aiCreatePropertyStore);
+  RISE_FROM_ASSIMP(aiSetImportPropertyInteger);
+  RISE_FROM_ASSIMP(aiReleasePropertyStore);
+  RISE_FROM_ASSIMP(aiImportFileExWithProperties);
+  RISE_FROM_ASSIMP(aiApplyPostProcessing);
+  RISE_FROM_ASSIMP(aiReleaseImport);
+  RISE_FROM_ASSIMP(aiGetErrorString);
+#undef RISE_FROM_ASSIMP
+};
+
+const AssimpFunctions& loadedAssimp() {
+  static const AssimpFunctions functions;
+  return functions;
+}
+
+// The scene Assimp read, released through its library.
+struct SceneRelease {
+  decltype(&aiReleaseImport) release;
+  void operator()(const aiScene* scene) const { release(scene); }
+};
+using AssimpScene = std::unique_ptr<const aiScene, SceneRelease>;
 
 const std::string kFormatExamples = ".obj, .ply, .md2, .gltf, .glb, .off or .3ds";
 
@@ -63,12 +94,12 @@ std::span<const std::uint8_t> bytesOf(const std::string& text) {
   return {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()};
 }
 
-void checkFormatIsSupported(const std::filesystem::path& path, const Assimp::Importer& importer) {
+void checkFormatIsSupported(const std::filesystem::path& path, const AssimpFunctions& assimp) {
   const std::string extension = path.extension().string();
   if (extension.empty())
     throw MeshFileError("the file name has no extension to tell its format; expected " +
                         kFormatExamples);
-  if (!importer.IsExtensionSupported(extension))
+  if (assimp.aiIsExtensionSupported(extension.c_str()) != AI_TRUE)
     throw MeshFileError("'" + extension + "' is not a model format that RISE reads; expected " +
                         kFormatExamples);
 }
@@ -150,21 +181,32 @@ void checkFacesAndTheirTypes(aiScene& scene) {
   }
 }
 
-const aiScene& readWithAssimp(Assimp::Importer& importer, const std::filesystem::path& path,
-                              int md2Keyframe) {
-  importer.SetPropertyInteger(AI_CONFIG_IMPORT_MD2_KEYFRAME, md2Keyframe);
+// Assimp's C interface keeps its last error in one string for all threads:
+// one model is read at a time.
+std::mutex assimpReading;
+
+AssimpScene readWithAssimp(const AssimpFunctions& assimp, const std::filesystem::path& path,
+                           int md2Keyframe) {
+  const std::lock_guard<std::mutex> oneAtATime(assimpReading);
+  const std::unique_ptr<aiPropertyStore, decltype(&aiReleasePropertyStore)> properties(
+      assimp.aiCreatePropertyStore(), assimp.aiReleasePropertyStore);
+  assimp.aiSetImportPropertyInteger(properties.get(), AI_CONFIG_IMPORT_MD2_KEYFRAME, md2Keyframe);
   // Validation comes first, so that no later step reads a corrupt index.
-  const aiScene* read = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
-  if (read == nullptr) throw MeshFileError(explained(tidied(importer.GetErrorString())));
-  // The importer owns the scene it read and lets it be changed between steps.
+  AssimpScene read(assimp.aiImportFileExWithProperties(
+                       path.c_str(), aiProcess_ValidateDataStructure, nullptr, properties.get()),
+                   SceneRelease{assimp.aiReleaseImport});
+  if (!read) throw MeshFileError(explained(tidied(assimp.aiGetErrorString())));
+  // Assimp owns the scene it read and lets it be changed between steps.
   checkFacesAndTheirTypes(const_cast<aiScene&>(*read));
   // Invalid normals (all zero, NaN) are dropped, to be computed like missing
   // ones. RISE computes those itself: Assimp's smoothing cannot split a
   // vertex that faces share across a crease (the corners of an OFF box).
-  const aiScene* scene =
-      importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_FindInvalidData);
-  if (scene == nullptr) throw MeshFileError(explained(tidied(importer.GetErrorString())));
-  return *scene;
+  // A step that fails releases the scene itself.
+  AssimpScene scene(assimp.aiApplyPostProcessing(read.release(),
+                                                 aiProcess_Triangulate | aiProcess_FindInvalidData),
+                    SceneRelease{assimp.aiReleaseImport});
+  if (!scene) throw MeshFileError(explained(tidied(assimp.aiGetErrorString())));
+  return scene;
 }
 
 Vec3 toVec3(const aiVector3D& v) { return Vec3(v.x, v.y, v.z); }
@@ -231,10 +273,11 @@ void appendNode(const aiScene& scene, const aiNode& node, const Mat4& parentToFi
 
 MeshGeometry readModel(const std::filesystem::path& path, int md2Keyframe) {
   checkReadable(path);
-  Assimp::Importer importer;
-  checkFormatIsSupported(path, importer);
+  const AssimpFunctions& assimp = loadedAssimp();
+  checkFormatIsSupported(path, assimp);
   checkHeader(path);
-  const aiScene& scene = readWithAssimp(importer, path, md2Keyframe);
+  const AssimpScene read = readWithAssimp(assimp, path, md2Keyframe);
+  const aiScene& scene = *read;
   MeshGeometry model;
   if (scene.mRootNode != nullptr)
     appendNode(scene, *scene.mRootNode, Mat4(1.0f), !isMd2File(path), model);

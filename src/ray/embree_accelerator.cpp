@@ -5,8 +5,43 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/shared_library.hpp"
+
 namespace rise {
+
+// Embree's functions, from its library, loaded when the first accelerator of
+// it is made: a render without it does not pay for loading it.
+struct EmbreeFunctions {
+  SharedLibrary library{RISE_EMBREE_LIBRARY};
+#define RISE_FROM_EMBREE(name) RISE_LIBRARY_FUNCTION(library, name)
+  RISE_FROM_EMBREE(rtcNewDevice);
+  RISE_FROM_EMBREE(rtcGetDeviceError);
+  RISE_FROM_EMBREE(rtcReleaseDevice);
+  RISE_FROM_EMBREE(rtcNewScene);
+  RISE_FROM_EMBREE(rtcCommitScene);
+  RISE_FROM_EMBREE(rtcReleaseScene);
+  RISE_FROM_EMBREE(rtcNewGeometry);
+  RISE_FROM_EMBREE(rtcSetNewGeometryBuffer);
+  RISE_FROM_EMBREE(rtcSetGeometryUserData);
+  RISE_FROM_EMBREE(rtcSetGeometryUserPrimitiveCount);
+  RISE_FROM_EMBREE(rtcSetGeometryBoundsFunction);
+  RISE_FROM_EMBREE(rtcSetGeometryIntersectFunction);
+  RISE_FROM_EMBREE(rtcSetGeometryOccludedFunction);
+  RISE_FROM_EMBREE(rtcSetGeometryOccludedFilterFunction);
+  RISE_FROM_EMBREE(rtcCommitGeometry);
+  RISE_FROM_EMBREE(rtcAttachGeometryByID);
+  RISE_FROM_EMBREE(rtcReleaseGeometry);
+  RISE_FROM_EMBREE(rtcIntersect1);
+  RISE_FROM_EMBREE(rtcOccluded1);
+#undef RISE_FROM_EMBREE
+};
+
 namespace {
+
+const EmbreeFunctions& loadedEmbree() {
+  static const EmbreeFunctions functions;
+  return functions;
+}
 
 // What a query carries into Embree's callbacks. Embree passes the context it
 // was given, so ours begins with Embree's and adds the rest.
@@ -116,8 +151,8 @@ bool allTriangles(const Shape& shape) {
   return true;
 }
 
-void throwOnError(RTCDevice device, const char* what) {
-  if (const RTCError error = rtcGetDeviceError(device); error != RTC_ERROR_NONE)
+void throwOnError(const EmbreeFunctions& embree, RTCDevice device, const char* what) {
+  if (const RTCError error = embree.rtcGetDeviceError(device); error != RTC_ERROR_NONE)
     throw std::runtime_error(std::string("Embree: ") + what + " failed (error " +
                              std::to_string(static_cast<int>(error)) + ")");
 }
@@ -125,11 +160,11 @@ void throwOnError(RTCDevice device, const char* what) {
 }  // namespace
 
 EmbreeAccelerator::EmbreeAccelerator(const std::vector<std::unique_ptr<Shape>>& shapes, int threads)
-    : shapes_(shapes), isTriangles_(shapes.size(), false) {
+    : embree_(loadedEmbree()), shapes_(shapes), isTriangles_(shapes.size(), false) {
   const std::string config = threads > 0 ? "threads=" + std::to_string(threads) : "";
-  device_ = rtcNewDevice(config.c_str());
+  device_ = embree_.rtcNewDevice(config.c_str());
   if (device_ == nullptr) throw std::runtime_error("Embree: cannot create a device");
-  scene_ = rtcNewScene(device_);
+  scene_ = embree_.rtcNewScene(device_);
   for (unsigned int shape = 0; shape < shapes.size(); ++shape) {
     if (!shapes[shape]->bounds().isFinite()) {
       unbounded_.push_back(static_cast<int>(shape));
@@ -140,13 +175,13 @@ EmbreeAccelerator::EmbreeAccelerator(const std::vector<std::unique_ptr<Shape>>& 
       addUserGeometry(shape);
     }
   }
-  rtcCommitScene(scene_);
-  throwOnError(device_, "building the scene");
+  embree_.rtcCommitScene(scene_);
+  throwOnError(embree_, device_, "building the scene");
 }
 
 EmbreeAccelerator::~EmbreeAccelerator() {
-  rtcReleaseScene(scene_);
-  rtcReleaseDevice(device_);
+  embree_.rtcReleaseScene(scene_);
+  embree_.rtcReleaseDevice(device_);
 }
 
 // Each triangle gets three vertices of its own: the Shape interface gives
@@ -154,10 +189,10 @@ EmbreeAccelerator::~EmbreeAccelerator() {
 void EmbreeAccelerator::addTriangles(unsigned int shape) {
   const Shape& source = *shapes_[shape];
   const auto count = static_cast<std::size_t>(source.primitiveCount());
-  RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-  auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+  RTCGeometry geometry = embree_.rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+  auto* vertices = static_cast<float*>(embree_.rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), 3 * count));
-  auto* indices = static_cast<unsigned int*>(rtcSetNewGeometryBuffer(
+  auto* indices = static_cast<unsigned int*>(embree_.rtcSetNewGeometryBuffer(
       geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned int), count));
   for (std::size_t triangle = 0; triangle < count; ++triangle) {
     std::array<Vec3, 3> corners{};
@@ -168,24 +203,25 @@ void EmbreeAccelerator::addTriangles(unsigned int shape) {
       indices[vertex] = static_cast<unsigned int>(vertex);
     }
   }
-  rtcSetGeometryUserData(geometry, const_cast<Shape*>(&source));
-  rtcSetGeometryOccludedFilterFunction(geometry, filterTriangleCrossing);
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometryByID(scene_, geometry, shape);
-  rtcReleaseGeometry(geometry);
+  embree_.rtcSetGeometryUserData(geometry, const_cast<Shape*>(&source));
+  embree_.rtcSetGeometryOccludedFilterFunction(geometry, filterTriangleCrossing);
+  embree_.rtcCommitGeometry(geometry);
+  embree_.rtcAttachGeometryByID(scene_, geometry, shape);
+  embree_.rtcReleaseGeometry(geometry);
 }
 
 void EmbreeAccelerator::addUserGeometry(unsigned int shape) {
   const Shape& source = *shapes_[shape];
-  RTCGeometry geometry = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
-  rtcSetGeometryUserPrimitiveCount(geometry, static_cast<unsigned int>(source.primitiveCount()));
-  rtcSetGeometryUserData(geometry, const_cast<Shape*>(&source));
-  rtcSetGeometryBoundsFunction(geometry, boundPrimitive, nullptr);
-  rtcSetGeometryIntersectFunction(geometry, intersectPrimitive);
-  rtcSetGeometryOccludedFunction(geometry, occludePrimitive);
-  rtcCommitGeometry(geometry);
-  rtcAttachGeometryByID(scene_, geometry, shape);
-  rtcReleaseGeometry(geometry);
+  RTCGeometry geometry = embree_.rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_USER);
+  embree_.rtcSetGeometryUserPrimitiveCount(geometry,
+                                           static_cast<unsigned int>(source.primitiveCount()));
+  embree_.rtcSetGeometryUserData(geometry, const_cast<Shape*>(&source));
+  embree_.rtcSetGeometryBoundsFunction(geometry, boundPrimitive, nullptr);
+  embree_.rtcSetGeometryIntersectFunction(geometry, intersectPrimitive);
+  embree_.rtcSetGeometryOccludedFunction(geometry, occludePrimitive);
+  embree_.rtcCommitGeometry(geometry);
+  embree_.rtcAttachGeometryByID(scene_, geometry, shape);
+  embree_.rtcReleaseGeometry(geometry);
 }
 
 bool EmbreeAccelerator::nearest(const Ray& ray, float tMin, Hit& hit,
@@ -197,7 +233,7 @@ bool EmbreeAccelerator::nearest(const Ray& ray, float tMin, Hit& hit,
   QueryContext query = makeQuery(ray, tMin, hit.t, counters);
   query.userHit = &userHit;
   RTCRayHit rayHit = embreeRay(ray, tMin, hit.t);
-  rtcIntersect1(scene_, &query.embree, &rayHit);
+  embree_.rtcIntersect1(scene_, &query.embree, &rayHit);
   const unsigned int shape = rayHit.hit.geomID;
   if (shape == RTC_INVALID_GEOMETRY_ID) return found;
   if (!isTriangles_[shape]) {
@@ -225,7 +261,7 @@ void EmbreeAccelerator::visitCrossings(const Ray& ray, float tMin, float tMax,
   QueryContext query = makeQuery(ray, tMin, tMax, counters);
   query.visitor = &visitor;
   RTCRay shadowRay = embreeRay(ray, tMin, tMax).ray;
-  rtcOccluded1(scene_, &query.embree, &shadowRay);
+  embree_.rtcOccluded1(scene_, &query.embree, &shadowRay);
 }
 
 }  // namespace rise

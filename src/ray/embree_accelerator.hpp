@@ -27,10 +27,15 @@
 
 namespace rise {
 
+struct EmbreeFunctions;
+
+// Embree's library is loaded when the first accelerator of it is made
+// (core/shared_library.hpp); a build without Embree has no such class.
 class EmbreeAccelerator final : public Accelerator {
  public:
   // Builds on `threads` threads (0: one per core). Throws
-  // std::runtime_error when Embree reports an error.
+  // std::runtime_error when Embree's library cannot be loaded or Embree
+  // reports an error.
   EmbreeAccelerator(const std::vector<std::unique_ptr<Shape>>& shapes, int threads);
   ~EmbreeAccelerator() override;
   EmbreeAccelerator(const EmbreeAccelerator&) = delete;
@@ -44,6 +49,7 @@ class EmbreeAccelerator final : public Accelerator {
   void addTriangles(unsigned int shape);
   void addUserGeometry(unsigned int shape);
 
+  const EmbreeFunctions& embree_;
   const std::vector<std::unique_ptr<Shape>>& shapes_;
   std::vector<int> unbounded_;
   std::vector<bool> isTriangles_;  // for each shape: given to Embree as triangles
