@@ -51,6 +51,8 @@ class TileTrace {
   // The pixel's auxiliary buffers: what `shown` hit, and the intersection
   // tests the pixel cost.
   void recordBuffers(const glm::ivec2& pixel, const SampleResult& shown, std::uint64_t tests);
+  // Whether the render wants any of them.
+  bool recordsBuffers() const { return depth_ || normal_ || cost_; }
 
   const FilmTile& film() const { return film_; }
 
@@ -92,11 +94,14 @@ SampleResult traceRecorded(TileTrace& tile, const glm::ivec2& pixel, int i, cons
 // it); place(pixel, rng) puts the pixel's samples and returns their offsets
 // in it; trace(pixel, i, rng, counters, tree) traces sample i, recording its
 // rays in `tree` unless that is null (a tree is made only for the pixel
-// recorded). Every sample goes to the film, the first to the buffers.
+// recorded). Every sample goes to the film, the first to the buffers, if
+// any is wanted: copying a sample just after it was made field by field
+// waits for those writes.
 template <typename Place, typename Trace>
 void tracePixels(TileTrace& tile, std::uint64_t seed, const Place& place, const Trace& trace) {
   const PixelRect& area = tile.area();
   StepRecorder* const steps = tile.steps();
+  const bool buffers = tile.recordsBuffers();
   for (int y = area.y0; y < area.y1 && !tile.cancelled(); ++y) {
     for (int x = area.x0; x < area.x1; ++x) {
       const glm::ivec2 pixel(x, y);
@@ -110,9 +115,10 @@ void tracePixels(TileTrace& tile, std::uint64_t seed, const Place& place, const 
         const SampleResult sample = recording ? traceRecorded(tile, pixel, i, offset, rng, trace)
                                               : trace(pixel, i, rng, tile.counters, nullptr);
         tile.addSample(pixel, offset, sample.color);
-        if (i == 0) first = sample;
+        if (i == 0 && buffers) first = sample;
       }
-      tile.recordBuffers(pixel, first, tile.counters.intersections.tests - testsBefore);
+      if (buffers)
+        tile.recordBuffers(pixel, first, tile.counters.intersections.tests - testsBefore);
     }
   }
 }

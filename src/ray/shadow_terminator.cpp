@@ -27,12 +27,17 @@ std::optional<Ray> shadowRay(const SurfacePoint& surface, const Vec3& sideNormal
                            triangle.normals[2], Vec2(triangle.weights.y, triangle.weights.z));
     smooth = glm::dot(sideNormal, surface.normal) >= 0.0f ? interpolated : -interpolated;
   }
-  if (glm::dot(smooth, toLight) <= 0.0f) return std::nullopt;
-  // Made in place: a Ray made apart and copied in would be read back just
-  // after being written field by field, which waits for the writes.
-  return std::optional<Ray>(std::in_place,
-                            shadowRayOrigin(surface, sideNormal) + kRayEpsilon * sideNormal,
-                            toLight, time);
+  // One object, made in place and returned as it is: a Ray made apart and
+  // copied in would be read back just after being written field by field,
+  // which waits for the writes.
+  std::optional<Ray> shadow;
+  if (glm::dot(smooth, toLight) > 0.0f) {
+    shadow.emplace();
+    shadow->origin = shadowRayOrigin(surface, sideNormal) + kRayEpsilon * sideNormal;
+    shadow->direction = toLight;
+    shadow->time = time;
+  }
+  return shadow;
 }
 
 }  // namespace rise

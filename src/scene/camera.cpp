@@ -21,12 +21,6 @@ ViewFrame::ViewFrame(const Camera& camera, int width, int height)
   halfWidth_ = halfHeight_ * static_cast<float>(width) / static_cast<float>(height);
 }
 
-Ray ViewFrame::primaryRay(float x, float y) const {
-  const float sx = (2.0f * x / static_cast<float>(width_) - 1.0f) * halfWidth_;
-  const float sy = (1.0f - 2.0f * y / static_cast<float>(height_)) * halfHeight_;
-  return Ray{eye_, glm::normalize(forward_ + sx * right_ + sy * up_), time_};
-}
-
 Camera cameraForFrame(const Camera& camera, int frame, int frames) {
   Camera framed = camera;
   const float length = 1.0f / static_cast<float>(frames);

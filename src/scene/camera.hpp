@@ -64,7 +64,13 @@ class ViewFrame {
   // The ray from the eye through the continuous raster position (x, y):
   // (0, 0) is the top-left corner of the image, (width, height) the
   // bottom-right, so pixel (i, j)'s centre is (i + 0.5, j + 0.5).
-  Ray primaryRay(float x, float y) const;  // at the instant the shutter opens
+  // At the instant the shutter opens. Inline, so that a packet of rays has
+  // each made in its place rather than copied there.
+  Ray primaryRay(float x, float y) const {
+    const float sx = (2.0f * x / static_cast<float>(width_) - 1.0f) * halfWidth_;
+    const float sy = (1.0f - 2.0f * y / static_cast<float>(height_)) * halfHeight_;
+    return Ray{eye_, glm::normalize(forward_ + sx * right_ + sy * up_), time_};
+  }
 
   // The point of the lens chosen by the sample `lens` in the unit square, as
   // offsets along right and up from the eye: uniform over the lens's disk,
