@@ -36,16 +36,14 @@ namespace {
 // first model is read: a scene without one does not pay for loading it.
 struct AssimpFunctions {
   SharedLibrary library{RISE_ASSIMP_LIBRARY};
-#define RISE_FROM_ASSIMP(name) RISE_LIBRARY_FUNCTION(library, name)
-  RISE_FROM_ASSIMP(aiIsExtensionSupported);
-  RISE_FROM_ASSIMP(aiCreatePropertyStore);
-  RISE_FROM_ASSIMP(aiSetImportPropertyInteger);
-  RISE_FROM_ASSIMP(aiReleasePropertyStore);
-  RISE_FROM_ASSIMP(aiImportFileExWithProperties);
-  RISE_FROM_ASSIMP(aiApplyPostProcessing);
-  RISE_FROM_ASSIMP(aiReleaseImport);
-  RISE_FROM_ASSIMP(aiGetErrorString);
-#undef RISE_FROM_ASSIMP
+  RISE_LIBRARY_FUNCTION(library, aiIsExtensionSupported);
+  RISE_LIBRARY_FUNCTION(library, aiCreatePropertyStore);
+  RISE_LIBRARY_FUNCTION(library, aiSetImportPropertyInteger);
+  RISE_LIBRARY_FUNCTION(library, aiReleasePropertyStore);
+  RISE_LIBRARY_FUNCTION(library, aiImportFileExWithProperties);
+  RISE_LIBRARY_FUNCTION(library, aiApplyPostProcessing);
+  RISE_LIBRARY_FUNCTION(library, aiReleaseImport);
+  RISE_LIBRARY_FUNCTION(library, aiGetErrorString);
 };
 
 const AssimpFunctions& loadedAssimp() {

@@ -184,24 +184,19 @@ bool Bvh::intersectPrimitive(const LeafPrimitive& primitive, const Ray& ray, flo
                              IntersectionCounters& counters) const {
   const Shape& shape = *shapes_[primitive.ref.shape];
   const int index = static_cast<int>(primitive.ref.primitive);
-  switch (primitive.kind) {
-    case Kind::Triangle: {
-      ++counters.tests;
-      const TriangleEdges& triangle = primitive.triangle;
-      if (!intersectTriangleEdges(ray, triangle.corner, triangle.edge1, triangle.edge2, tMin, hit.t,
-                                  hit.t, hit.barycentric))
-        return false;
-      hit.primitive = index;
-      break;
-    }
-    case Kind::Sphere:
-      ++counters.tests;
-      if (!intersectSphere(ray, primitive.sphere.center, primitive.sphere.radiusSquared, tMin,
-                           hit.t, hit.t))
-        return false;
-      break;
-    case Kind::Other:
-      return shape.intersectPrimitive(index, ray, tMin, hit, counters);
+  if (primitive.kind == Kind::Other)
+    return shape.intersectPrimitive(index, ray, tMin, hit, counters);
+  ++counters.tests;
+  if (primitive.kind == Kind::Sphere) {
+    if (!intersectSphere(ray, primitive.sphere.center, primitive.sphere.radiusSquared, tMin, hit.t,
+                         hit.t))
+      return false;
+  } else {
+    const TriangleEdges& triangle = primitive.triangle;
+    if (!intersectTriangleEdges(ray, triangle.corner, triangle.edge1, triangle.edge2, tMin, hit.t,
+                                hit.t, hit.barycentric))
+      return false;
+    hit.primitive = index;
   }
   hit.shape = &shape;
   return true;

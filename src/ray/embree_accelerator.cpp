@@ -13,27 +13,25 @@ namespace rise {
 // it is made: a render without it does not pay for loading it.
 struct EmbreeFunctions {
   SharedLibrary library{RISE_EMBREE_LIBRARY};
-#define RISE_FROM_EMBREE(name) RISE_LIBRARY_FUNCTION(library, name)
-  RISE_FROM_EMBREE(rtcNewDevice);
-  RISE_FROM_EMBREE(rtcGetDeviceError);
-  RISE_FROM_EMBREE(rtcReleaseDevice);
-  RISE_FROM_EMBREE(rtcNewScene);
-  RISE_FROM_EMBREE(rtcCommitScene);
-  RISE_FROM_EMBREE(rtcReleaseScene);
-  RISE_FROM_EMBREE(rtcNewGeometry);
-  RISE_FROM_EMBREE(rtcSetNewGeometryBuffer);
-  RISE_FROM_EMBREE(rtcSetGeometryUserData);
-  RISE_FROM_EMBREE(rtcSetGeometryUserPrimitiveCount);
-  RISE_FROM_EMBREE(rtcSetGeometryBoundsFunction);
-  RISE_FROM_EMBREE(rtcSetGeometryIntersectFunction);
-  RISE_FROM_EMBREE(rtcSetGeometryOccludedFunction);
-  RISE_FROM_EMBREE(rtcSetGeometryOccludedFilterFunction);
-  RISE_FROM_EMBREE(rtcCommitGeometry);
-  RISE_FROM_EMBREE(rtcAttachGeometryByID);
-  RISE_FROM_EMBREE(rtcReleaseGeometry);
-  RISE_FROM_EMBREE(rtcIntersect1);
-  RISE_FROM_EMBREE(rtcOccluded1);
-#undef RISE_FROM_EMBREE
+  RISE_LIBRARY_FUNCTION(library, rtcNewDevice);
+  RISE_LIBRARY_FUNCTION(library, rtcGetDeviceError);
+  RISE_LIBRARY_FUNCTION(library, rtcReleaseDevice);
+  RISE_LIBRARY_FUNCTION(library, rtcNewScene);
+  RISE_LIBRARY_FUNCTION(library, rtcCommitScene);
+  RISE_LIBRARY_FUNCTION(library, rtcReleaseScene);
+  RISE_LIBRARY_FUNCTION(library, rtcNewGeometry);
+  RISE_LIBRARY_FUNCTION(library, rtcSetNewGeometryBuffer);
+  RISE_LIBRARY_FUNCTION(library, rtcSetGeometryUserData);
+  RISE_LIBRARY_FUNCTION(library, rtcSetGeometryUserPrimitiveCount);
+  RISE_LIBRARY_FUNCTION(library, rtcSetGeometryBoundsFunction);
+  RISE_LIBRARY_FUNCTION(library, rtcSetGeometryIntersectFunction);
+  RISE_LIBRARY_FUNCTION(library, rtcSetGeometryOccludedFunction);
+  RISE_LIBRARY_FUNCTION(library, rtcSetGeometryOccludedFilterFunction);
+  RISE_LIBRARY_FUNCTION(library, rtcCommitGeometry);
+  RISE_LIBRARY_FUNCTION(library, rtcAttachGeometryByID);
+  RISE_LIBRARY_FUNCTION(library, rtcReleaseGeometry);
+  RISE_LIBRARY_FUNCTION(library, rtcIntersect1);
+  RISE_LIBRARY_FUNCTION(library, rtcOccluded1);
 };
 
 namespace {

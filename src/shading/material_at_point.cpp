@@ -19,10 +19,9 @@ SurfaceColors surfaceColors(const Material& material, const SurfacePoint& surfac
 }
 
 Vec3 shadingNormal(const Material& material, const SurfacePoint& surface) {
-  if (!material.normalMap)
-    return material.bump ? bumped(*material.bump, surface) : surface.shadingNormal;
+  if (!material.normalMap && !material.bump) return surface.shadingNormal;
   SurfacePoint tilted = surface;
-  tilted.shadingNormal = normalMapped(*material.normalMap, surface);
+  if (material.normalMap) tilted.shadingNormal = normalMapped(*material.normalMap, surface);
   return material.bump ? bumped(*material.bump, tilted) : tilted.shadingNormal;
 }
 
