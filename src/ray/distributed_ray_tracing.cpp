@@ -133,16 +133,6 @@ class DistributedChoices final : public PathChoices {
 
 }  // namespace
 
-Ray thinLensRay(const ViewFrame& view, const Vec2& raster, const Vec2& lens) {
-  const Ray pinhole = view.primaryRay(raster.x, raster.y);
-  if (view.lensRadius() == 0.0f) return pinhole;
-  const Vec3 inFocus =
-      pinhole.at(view.focalDistance() / glm::dot(pinhole.direction, view.forward()));
-  const Vec2 onLens = view.lensPoint(lens);
-  const Vec3 origin = view.eye() + onLens.x * view.right() + onLens.y * view.up();
-  return Ray{origin, glm::normalize(inFocus - origin)};
-}
-
 RenderResult DistributedRayTracer::render(const Scene& scene, const RenderSettings& settings,
                                           RenderObserver& observer) const {
   const SceneIntersector intersector(scene, settings.accel, settings.threads);
