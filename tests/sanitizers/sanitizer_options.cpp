@@ -5,7 +5,7 @@
 // RISE_DETECT_LEAKS is "0" for the programs that unload drivers before they
 // exit (CMakeLists.txt says why).
 //
-// intercept_tls_get_addr=0: the sanitizers of clang 14 (before LLVM 17) take a
+// intercept_tls_get_addr=0: the sanitizers of clang 14 (fixed in LLVM 17) take a
 // thread-local block of a library loaded by dlopen (Embree, Assimp) for one
 // of glibc before 2.25 whenever malloc happens to place it 16 bytes past a
 // page boundary, read a size and start from the two words before it, and
