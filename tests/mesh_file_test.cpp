@@ -294,6 +294,19 @@ TEST_F(MeshFiles, APlyModelWithAFaceOfNoCornersIsRefused) {
             "face 0 has no corners, as in a corrupt file");
 }
 
+TEST_F(MeshFiles, AModelWithNoPointsToDrawIsRefused) {
+  // Assimp drops such a mesh, and with none left its C interface crashed.
+  const std::string reason =
+      "no mesh of the file has points to draw: in each, a coordinate is not a number, or every "
+      "point that its faces use is the same";
+  EXPECT_EQ(reasonLoading(write("one-point.off", "OFF\n3 1 0\n1 2 3\n1 2 3\n1 2 3\n3 0 1 2\n")),
+            reason);
+  EXPECT_EQ(reasonLoading(write("infinite.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1e39 0\n3 0 1 2\n")),
+            reason);
+  // Points apart are drawn.
+  EXPECT_EQ(reasonLoading(write("apart.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")), "");
+}
+
 TEST_F(MeshFiles, APlyHeaderWithWordsPlyDoesNotHaveIsRefused) {
   // As a fuzzer made it: Assimp stopped RISE on an assertion reading it.
   const std::string misspeltKeyword = R"(ply

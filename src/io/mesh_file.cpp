@@ -179,6 +179,41 @@ void checkFacesAndTheirTypes(aiScene& scene) {
   }
 }
 
+// Whether Assimp's FindInvalidData step drops the mesh for its points: one
+// with a coordinate that is not finite, or, where faces use more than one
+// point, all of them the same. Its rule as Assimp 5.2 applies it, comparing
+// each point used with the one before it in the file, used or not.
+bool pointsAssimpDrops(const aiMesh& mesh) {
+  if (mesh.mVertices == nullptr) return false;
+  std::vector<bool> unused(mesh.mNumVertices, mesh.mNumFaces != 0);
+  for (unsigned int face = 0; face < mesh.mNumFaces; ++face)
+    for (unsigned int corner = 0; corner < mesh.mFaces[face].mNumIndices; ++corner)
+      unused[mesh.mFaces[face].mIndices[corner]] = false;
+  unsigned int used = 0;
+  bool differ = false;
+  for (unsigned int i = 0; i < mesh.mNumVertices; ++i) {
+    if (unused[i]) continue;
+    ++used;
+    const aiVector3D& point = mesh.mVertices[i];
+    if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z)) return true;
+    if (i > 0 && point != mesh.mVertices[i - 1]) differ = true;
+  }
+  return used > 1 && !differ;
+}
+
+// FindInvalidData fails when it drops every mesh, and aiApplyPostProcessing
+// in Assimp 5.2 then frees the scene a second time and crashes: that file is
+// refused before.
+void checkSomeMeshKeepsItsPoints(const aiScene& scene) {
+  const std::span<aiMesh* const> meshes(scene.mMeshes, scene.mNumMeshes);
+  if (meshes.empty() || !std::all_of(meshes.begin(), meshes.end(),
+                                     [](const aiMesh* mesh) { return pointsAssimpDrops(*mesh); }))
+    return;
+  throw MeshFileError(
+      "no mesh of the file has points to draw: in each, a coordinate is not a number, or every "
+      "point that its faces use is the same");
+}
+
 // Assimp's C interface keeps its last error in one string for all threads:
 // one model is read at a time.
 std::mutex assimpReading;
@@ -196,6 +231,7 @@ AssimpScene readWithAssimp(const AssimpFunctions& assimp, const std::filesystem:
   if (!read) throw MeshFileError(explained(tidied(assimp.aiGetErrorString())));
   // Assimp owns the scene it read and lets it be changed between steps.
   checkFacesAndTheirTypes(const_cast<aiScene&>(*read));
+  checkSomeMeshKeepsItsPoints(*read);
   // Invalid normals (all zero, NaN) are dropped, to be computed like missing
   // ones. RISE computes those itself: Assimp's smoothing cannot split a
   // vertex that faces share across a crease (the corners of an OFF box).
