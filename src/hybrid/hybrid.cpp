@@ -169,9 +169,7 @@ class HybridPass {
         });
     counters.raySeconds += secondsSince(start);
 
-    std::uint64_t covered = 0;
-    for (const Pixel& pixel : pixels_) covered += pixel.item.shape >= 0 ? 1 : 0;
-    stats.add("covered_pixels", static_cast<double>(covered));
+    stats.add("covered_pixels", static_cast<double>(found.coveredPixels));
     images.result.stats = std::move(stats);
     return std::move(images.result);
   }
@@ -187,9 +185,11 @@ class HybridPass {
   struct BandWork {
     HybridCounters counters;
     std::vector<Seed> seeds;
+    std::uint64_t coveredPixels = 0;  // those where the item buffer shows an object
 
     BandWork& operator+=(const BandWork& other) {
       counters += other.counters;
+      coveredPixels += other.coveredPixels;
       seeds.insert(seeds.end(), other.seeds.begin(), other.seeds.end());
       return *this;
     }
@@ -267,6 +267,7 @@ class HybridPass {
     pixel = Pixel{};  // what the last accumulation pass left goes
     pixel.ray = rayAt(x, y);
     pixel.item = items_->itemOf(face);
+    band.coveredPixels += pixel.item.shape >= 0 ? 1 : 0;
     if (pixel.item.shape >= 0 && !intersect(pixel.item, pixel.ray, pixel, pixel.hit, band.counters))
       pixel.verdict = Verdict::Outside;
     std::array<Item, 4> tested;
