@@ -19,9 +19,11 @@ SurfaceColors surfaceColors(const Material& material, const SurfacePoint& surfac
 }
 
 Vec3 shadingNormal(const Material& material, const SurfacePoint& surface) {
-  if (!material.normalMap && !material.bump) return surface.shadingNormal;
+  // The point is copied only where a normal map tilts it before a bump map.
+  if (!material.normalMap)
+    return material.bump ? bumped(*material.bump, surface) : surface.shadingNormal;
   SurfacePoint tilted = surface;
-  if (material.normalMap) tilted.shadingNormal = normalMapped(*material.normalMap, surface);
+  tilted.shadingNormal = normalMapped(*material.normalMap, surface);
   return material.bump ? bumped(*material.bump, tilted) : tilted.shadingNormal;
 }
 
