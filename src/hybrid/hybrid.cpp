@@ -18,7 +18,13 @@
 //     (ray_tracing.cpp): shadow rays, and reflection and refraction rays
 //     where the material has them, through the whole acceleration structure.
 //     A pixel where the item buffer shows nothing takes the background, and
-//     no ray at all.
+//     no ray at all. All of a row's first hits being known before any is
+//     shaded, a run of neighbours is shaded up to its shadow rays, which then
+//     go through the structure together, a packet towards each light (rays
+//     from neighbouring points to one light meet the same boxes), before
+//     each pixel's shading is finished: the same rays and colours as one
+//     pixel at a time, at less cost. Whitted's recursion, one ray after
+//     another, cannot gather them so.
 //
 // Silhouettes. Polygons are not the exact surfaces: a curved object's lie
 // inside its true outline, and at any edge rounding may put a pixel centre on
@@ -150,12 +156,16 @@ class HybridPass {
     counters.itemBufferSeconds += secondsSince(start);
 
     start = std::chrono::steady_clock::now();
-    BandWork found = inBands<BandWork>([&](int x, int y, BandWork& band) { findHit(x, y, band); });
+    BandWork found = inBands<BandWork>(
+        [&](int y, int x0, int x1, BandWork& band) {
+          for (int x = x0; x < x1; ++x) findHit(x, y, band);
+        },
+        [](const PixelRect&, int, const BandWork&) {});
     counters += found.counters;
     followOutlines(std::move(found.seeds), counters);
     Images images(settings_, recording_.index == 0);
     counters += inBands<HybridCounters>(
-        [&](int x, int y, HybridCounters& band) { shade(x, y, images, band); },
+        [&](int y, int x0, int x1, HybridCounters& band) { shadeRow(y, x0, x1, images, band); },
         [&](const PixelRect& band, int task, const HybridCounters& bandCounters) {
           if (recording_.steps)
             recording_.steps->record(
@@ -196,23 +206,21 @@ class HybridPass {
   };
 
   Pixel& at(int x, int y) { return pixels_[static_cast<std::size_t>(y) * settings_.width + x]; }
+  const Pixel& at(int x, int y) const {
+    return pixels_[static_cast<std::size_t>(y) * settings_.width + x];
+  }
 
-  // Calls visit(x, y, part) for every pixel, band by band on the workers,
-  // each band with a part of its own, then done(band, its number, part);
-  // returns the parts summed in order.
-  template <typename Part, typename Visit, typename Done>
-  Part inBands(const Visit& visit, const Done& done) {
+  // Calls visitRow(y, x0, x1, part) for every row of every band, band by
+  // band on the workers, each band with a part of its own, then done(band,
+  // its number, part); returns the parts summed in order.
+  template <typename Part, typename VisitRow, typename Done>
+  Part inBands(const VisitRow& visitRow, const Done& done) {
     const std::vector<PixelRect> bands = makeBands(settings_.width, settings_.height);
     return workers_.sumOverTasks<Part>(static_cast<int>(bands.size()), [&](int task, Part& part) {
       const PixelRect& band = bands[static_cast<std::size_t>(task)];
-      for (int y = band.y0; y < band.y1; ++y)
-        for (int x = band.x0; x < band.x1; ++x) visit(x, y, part);
+      for (int y = band.y0; y < band.y1; ++y) visitRow(y, band.x0, band.x1, part);
       done(band, task, part);
     });
-  }
-  template <typename Part, typename Visit>
-  Part inBands(const Visit& visit) {
-    return inBands<Part>(visit, [](const PixelRect&, int, const Part&) {});
   }
 
   template <typename Visit>
@@ -319,13 +327,125 @@ class HybridPass {
     Image* face = result.buffer("face");
   };
 
+  // A row's pixels, a run of neighbours at a time. A pixel whose first hit
+  // the item buffer gave is shaded up to its shadow rays; the run's shadow
+  // rays are then traced together, a packet of neighbours' rays towards one
+  // light at a time, which meet the same boxes of the structure; then each
+  // pixel's shading is finished. The others, and the pixel whose ray tree is
+  // recorded, are shaded whole at once.
+  void shadeRow(int y, int x0, int x1, Images& images, HybridCounters& counters) {
+    constexpr int kRun = 64;
+    RunOfFirstHits run;
+    for (int start = x0; start < x1; start += kRun) {
+      run.clear();
+      for (int x = start; x < std::min(x1, start + kRun); ++x) {
+        if (waitsOnShadowRays(x, y))
+          beginShading(x, y, run, counters);
+        else
+          shade(x, y, images, counters);
+      }
+      traceShadowRays(y, run, counters);
+      for (const WaitingPixel& waiting : run.pixels)
+        finishShading(waiting, y, run, images, counters);
+    }
+  }
+
+  bool waitsOnShadowRays(int x, int y) const {
+    const Pixel& pixel = at(x, y);
+    return pixel.verdict == Verdict::FromItemBuffer && pixel.item.shape >= 0 &&
+           !(recording_.trees && recording_.trees->wantsTreeOf({x, y}));
+  }
+
+  // A pixel shaded up to its shadow rays.
+  struct WaitingPixel {
+    int x;
+    FirstHitShading shading;
+    bool spawnedShadowRays;
+  };
+  // A run's pixels waiting on their shadow rays, and those rays: each one's
+  // pixel, and what it let through once traced.
+  struct RunOfFirstHits {
+    std::vector<WaitingPixel> pixels;
+    std::vector<LitShadowRay> shadowRays;
+    std::vector<int> pixelOf;  // the x of each shadow ray's pixel
+    std::vector<Color> visible;
+
+    void clear() {
+      pixels.clear();
+      shadowRays.clear();
+      pixelOf.clear();
+    }
+  };
+
+  void beginShading(int x, int y, RunOfFirstHits& run, HybridCounters& counters) {
+    const Pixel& pixel = at(x, y);
+    ++counters.counts[kFromItemBuffer];
+    const std::size_t before = run.shadowRays.size();
+    SingleRayChoices whitted;
+    run.pixels.push_back(
+        {x,
+         FirstHitShading(context_, pixel.ray, pixel.hit, whitted, counters.traced, run.shadowRays),
+         false});
+    run.pixels.back().spawnedShadowRays = run.shadowRays.size() > before;
+    run.pixelOf.resize(run.shadowRays.size(), x);
+  }
+
+  // The run's shadow rays, a packet of up to eight towards one light at a
+  // time; each ray's tests are its pixel's.
+  void traceShadowRays(int y, RunOfFirstHits& run, HybridCounters& counters) {
+    run.visible.resize(run.shadowRays.size());
+    for (int light = 0; light < static_cast<int>(context_.scene.lights.size()); ++light) {
+      ShadowRayPacket packet;
+      std::array<std::size_t, kPacketSize> index{};
+      const auto trace = [&] {
+        const std::array<Color, kPacketSize> through =
+            context_.intersector.transmittanceOfPacket(packet, 0.0f);
+        for (int lane = 0; lane < packet.size; ++lane) {
+          const std::size_t i = index[static_cast<std::size_t>(lane)];
+          run.visible[i] = through[static_cast<std::size_t>(lane)];
+          counters.traced.intersections += packet.costs[static_cast<std::size_t>(lane)];
+          at(run.pixelOf[i], y).tests +=
+              static_cast<std::uint32_t>(packet.costs[static_cast<std::size_t>(lane)].tests);
+        }
+        packet = ShadowRayPacket{};
+      };
+      for (std::size_t i = 0; i < run.shadowRays.size(); ++i) {
+        if (run.shadowRays[i].light != light) continue;
+        index[static_cast<std::size_t>(packet.size)] = i;
+        packet.rays[static_cast<std::size_t>(packet.size)] = run.shadowRays[i].ray;
+        packet.tMax[static_cast<std::size_t>(packet.size++)] = run.shadowRays[i].distance;
+        if (packet.size == kPacketSize) trace();
+      }
+      if (packet.size > 0) trace();
+    }
+  }
+
+  void finishShading(const WaitingPixel& waiting, int y, const RunOfFirstHits& run, Images& images,
+                     HybridCounters& counters) {
+    const RaysSoFar before(counters.traced);
+    SingleRayChoices whitted;
+    const SampleResult sample =
+        waiting.shading.finish(context_, whitted, counters.traced, run.shadowRays, run.visible);
+    record(waiting.x, y, sample, waiting.spawnedShadowRays, before, images, counters);
+  }
+
+  // The counts of the rays traced so far, to tell what a pixel's shading
+  // spawned.
+  struct RaysSoFar {
+    explicit RaysSoFar(const TraceCounters& traced)
+        : shadow(traced.shadowRays),
+          mirrorOrGlass(traced.reflectionRays + traced.refractionRays),
+          tests(traced.intersections.tests) {}
+
+    std::uint64_t shadow, mirrorOrGlass, tests;
+  };
+
   // Whitted's Shade from the item's hit, or his whole primary ray where the
   // pixel fell back.
   void shade(int x, int y, Images& images, HybridCounters& counters) {
     Pixel& pixel = at(x, y);
     TraceCounters& traced = counters.traced;
-    const std::uint64_t shadowRays = traced.shadowRays, tests = traced.intersections.tests;
-    const std::uint64_t mirrorOrGlassRays = traced.reflectionRays + traced.refractionRays;
+    const RaysSoFar before(traced);
     SingleRayChoices whitted;
     // A tree is made only for the pixel recorded.
     std::optional<RayTree> tree;
@@ -346,10 +466,19 @@ class HybridPass {
       sample = shadeFirstHit(context_, pixel.ray, hit, whitted, traced, treeHere);
     }
     if (tree) recording_.trees->recordTree(std::move(*tree));
-    pixel.mirrorOrGlass = traced.reflectionRays + traced.refractionRays > mirrorOrGlassRays;
-    counters.counts[kSpawning] += traced.shadowRays > shadowRays || pixel.mirrorOrGlass;
+    record(x, y, sample, traced.shadowRays > before.shadow, before, images, counters);
+  }
+
+  // A pixel's sample, into the pass's images, and what its shading spawned
+  // since `before`, into the counters.
+  void record(int x, int y, const SampleResult& sample, bool spawnedShadowRays,
+              const RaysSoFar& before, Images& images, HybridCounters& counters) {
+    Pixel& pixel = at(x, y);
+    const TraceCounters& traced = counters.traced;
+    pixel.mirrorOrGlass = traced.reflectionRays + traced.refractionRays > before.mirrorOrGlass;
+    counters.counts[kSpawning] += spawnedShadowRays || pixel.mirrorOrGlass;
     counters.counts[kMirrorOrGlass] += pixel.mirrorOrGlass;
-    pixel.tests += static_cast<std::uint32_t>(traced.intersections.tests - tests);
+    pixel.tests += static_cast<std::uint32_t>(traced.intersections.tests - before.tests);
 
     images.image.at(x, y) = sample.color;
     if (images.cost) images.cost->at(x, y) = Color(static_cast<float>(pixel.tests));

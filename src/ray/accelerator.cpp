@@ -31,6 +31,13 @@ void Accelerator::nearestOfPacket(RayPacket& packet, float tMin) const {
     packet.found[i] = nearest(packet.rays[i], tMin, packet.hits[i], packet.costs[i]);
 }
 
+void Accelerator::visitCrossingsOfPacket(
+    ShadowRayPacket& packet, float tMin,
+    const std::array<CrossingVisitor*, kPacketSize>& visitors) const {
+  for (int i = 0; i < packet.size; ++i)
+    visitCrossings(packet.rays[i], tMin, packet.tMax[i], *visitors[i], packet.costs[i]);
+}
+
 std::unique_ptr<Accelerator> buildAccelerator(Accel accel,
                                               const std::vector<std::unique_ptr<Shape>>& shapes,
                                               int threads) {

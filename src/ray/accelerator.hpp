@@ -45,6 +45,15 @@ struct RayPacket {
   std::array<IntersectionCounters, kPacketSize> costs{};  // each ray's own
 };
 
+// Shadow rays whose crossings are wanted together: coherent rays, such as
+// those from neighbouring pixels' first hits towards one light.
+struct ShadowRayPacket {
+  int size = 0;  // the rays given, from the first
+  std::array<Ray, kPacketSize> rays;
+  std::array<float, kPacketSize> tMax{};                  // each ray's end
+  std::array<IntersectionCounters, kPacketSize> costs{};  // each ray's own
+};
+
 class Accelerator {
  public:
   virtual ~Accelerator() = default;
@@ -67,6 +76,13 @@ class Accelerator {
   // opaque shape it meets.
   virtual void visitCrossings(const Ray& ray, float tMin, float tMax, CrossingVisitor& visitor,
                               IntersectionCounters& counters) const = 0;
+
+  // Tells visitors[i] of the shapes that ray i of the packet crosses, as
+  // visitCrossings() tells them. A structure may walk the rays through it
+  // together (the BVH does); this one answers them one at a time.
+  virtual void visitCrossingsOfPacket(
+      ShadowRayPacket& packet, float tMin,
+      const std::array<CrossingVisitor*, kPacketSize>& visitors) const;
 };
 
 // Whether the ray meets `shape` at some t in (tMin, tMax): what the

@@ -273,6 +273,52 @@ TEST(Accelerators, LetThroughTheLightOfBruteForce) {
   }
 }
 
+// Packets of shadow rays of every size: coherent ones (from neighbouring
+// points towards one light) and scattered ones, of different lengths, with
+// rays of non-finite components among them. Each ray of a packet lets
+// through what it lets through alone, to the bit, and its tests are its own.
+TEST(Accelerators, LetThroughEachRayOfAPacketsLightAsAlone) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  for (int seed = 0; seed < kScenes; ++seed) {
+    RandomScene random(seed);
+    const Scene scene = random.scene();
+    for (Accel accel : availableAccels()) {
+      const SceneIntersector intersector(scene, accel);
+      RandomScene rays(4000 + seed);
+      int shadowed = 0;
+      int filtered = 0;
+      for (int i = 0; i < kRaysPerScene / kPacketSize; ++i) {
+        const bool coherent = i % 2 == 0;
+        const Vec3 start = rays.point(4.0f), light = rays.point(7.0f);
+        const float tMin = i % 3 == 0 ? rays.uniform(0.0f, 0.1f) : 0.0f;
+        ShadowRayPacket packet;
+        packet.size = 1 + i % kPacketSize;
+        for (int lane = 0; lane < packet.size; ++lane) {
+          const Vec3 from = start + 0.05f * Vec3(lane % 4, lane / 4, 0);
+          packet.rays[lane] = coherent ? Ray{from, light - from, 0.5f} : rays.ray();
+          if (i % 7 == 0 && lane == 2) packet.rays[lane].origin.x = nan;
+          packet.tMax[lane] = coherent && lane % 3 != 1 ? 1.0f : rays.uniform(0.2f, 1.2f);
+        }
+        const ShadowRayPacket given = packet;
+        const std::array<Color, kPacketSize> through =
+            intersector.transmittanceOfPacket(packet, tMin);
+        for (int lane = 0; lane < packet.size; ++lane) {
+          IntersectionCounters alone;
+          const Color expected =
+              intersector.transmittance(given.rays[lane], tMin, given.tMax[lane], alone);
+          ASSERT_EQ(through[lane], expected)
+              << accelName(accel) << ", scene " << seed << ", packet " << i << ", lane " << lane;
+          EXPECT_EQ(packet.costs[lane].tests > 0, alone.tests > 0) << accelName(accel);
+          if (expected == Color(0.0f)) ++shadowed;
+          if (expected != Color(0.0f) && expected != Color(1.0f)) ++filtered;
+        }
+      }
+      EXPECT_GT(shadowed, kRaysPerScene / 10) << accelName(accel);
+      EXPECT_GT(filtered, kRaysPerScene / 40) << accelName(accel);
+    }
+  }
+}
+
 // Two parallel squares, one mesh of four triangles, both crossed by the
 // ray along z through (0.1, 0.1).
 std::unique_ptr<Shape> twoSquares(int material) {

@@ -248,17 +248,9 @@ bool Bvh::nearest(const Ray& ray, float tMin, Hit& hit, IntersectionCounters& co
 
 void Bvh::visitCrossings(const Ray& ray, float tMin, float tMax, CrossingVisitor& visitor,
                          IntersectionCounters& counters) const {
-  for (int shape : unbounded_)
-    if (crosses(*shapes_[shape], ray, tMin, tMax, counters) && !visitor.crossed(shape)) return;
+  if (!crossUnbounded(ray, tMin, tMax, visitor, counters)) return;
   traverse(ray, tMin, tMax, counters, [&](std::uint32_t first, std::uint32_t count) {
-    for (std::uint32_t i = first; i < first + count; ++i) {
-      Hit crossing;
-      crossing.t = tMax;
-      if (intersectPrimitive(primitives_[i], ray, tMin, crossing, counters) &&
-          !visitor.crossed(static_cast<int>(primitives_[i].ref.shape)))
-        return false;
-    }
-    return true;
+    return crossLeaf(first, count, ray, tMin, tMax, visitor, counters);
   });
 }
 

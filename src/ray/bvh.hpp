@@ -26,7 +26,8 @@
 // them meets, and only those rays go on in it; each ray keeps its own
 // nearest hit, the same as alone (I. Wald, P. Slusallek, C. Benthin and
 // M. Wagner, "Interactive Rendering with Coherent Ray Tracing", Computer
-// Graphics Forum 20(3), 2001; bvh_packet_traversal.cpp). A shadow ray stops at the first opaque
+// Graphics Forum 20(3), 2001; bvh_packet_traversal.cpp); so does a packet of
+// shadow rays towards one light. A shadow ray stops at the first opaque
 // primitive it meets. A ray with a NaN or infinite component meets nothing
 // (its box tests would find it in every box, empty ones too).
 #pragma once
@@ -72,6 +73,9 @@ class Bvh final : public Accelerator {
   void nearestOfPacket(RayPacket& packet, float tMin) const override;
   void visitCrossings(const Ray& ray, float tMin, float tMax, CrossingVisitor& visitor,
                       IntersectionCounters& counters) const override;
+  void visitCrossingsOfPacket(
+      ShadowRayPacket& packet, float tMin,
+      const std::array<CrossingVisitor*, kPacketSize>& visitors) const override;
 
   std::span<const WideBvhNode> nodes() const { return nodes_; }
   std::span<const LeafPrimitive> primitives() const { return primitives_; }
@@ -90,6 +94,14 @@ class Bvh final : public Accelerator {
                                              IntersectionCounters& counters) const;
   [[gnu::always_inline]] bool offerLeaf(std::uint32_t first, std::uint32_t count, const Ray& ray,
                                         float tMin, NearestHit& nearest,
+                                        IntersectionCounters& counters) const;
+  // Tells the visitor of the ray's crossings of the shapes outside the tree,
+  // or of the primitives of a leaf; false once it asks to stop.
+  [[gnu::always_inline]] bool crossUnbounded(const Ray& ray, float tMin, float tMax,
+                                             CrossingVisitor& visitor,
+                                             IntersectionCounters& counters) const;
+  [[gnu::always_inline]] bool crossLeaf(std::uint32_t first, std::uint32_t count, const Ray& ray,
+                                        float tMin, float tMax, CrossingVisitor& visitor,
                                         IntersectionCounters& counters) const;
   LeafPrimitive leafPrimitive(PrimitiveRef ref) const;
   bool intersectPrimitive(const LeafPrimitive& primitive, const Ray& ray, float tMin, Hit& hit,

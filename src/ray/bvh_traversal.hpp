@@ -136,4 +136,25 @@ inline bool Bvh::offerLeaf(std::uint32_t first, std::uint32_t count, const Ray& 
   return found;
 }
 
+inline bool Bvh::crossUnbounded(const Ray& ray, float tMin, float tMax, CrossingVisitor& visitor,
+                                IntersectionCounters& counters) const {
+  for (int shape : unbounded_)
+    if (crosses(*shapes_[shape], ray, tMin, tMax, counters) && !visitor.crossed(shape))
+      return false;
+  return true;
+}
+
+inline bool Bvh::crossLeaf(std::uint32_t first, std::uint32_t count, const Ray& ray, float tMin,
+                           float tMax, CrossingVisitor& visitor,
+                           IntersectionCounters& counters) const {
+  for (std::uint32_t i = first; i < first + count; ++i) {
+    Hit crossing;
+    crossing.t = tMax;
+    if (intersectPrimitive(primitives_[i], ray, tMin, crossing, counters) &&
+        !visitor.crossed(static_cast<int>(primitives_[i].ref.shape)))
+      return false;
+  }
+  return true;
+}
+
 }  // namespace rise

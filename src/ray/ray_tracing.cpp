@@ -47,17 +47,6 @@ const AlgorithmDescription& WhittedRayTracer::description() const {
   return description;
 }
 
-// The surface at a hit as the shading sees it: the normal turned towards the
-// side the ray came from, and whether the ray is entering the solid.
-struct ShadingFrame {
-  SurfacePoint surface;
-  Vec3 normal{0.0f};         // the geometric normal, unit, on the ray's side of the surface
-  Vec3 shadingNormal{0.0f};  // the smooth normal for shading, on the same side
-  Vec3 toViewer{0.0f};       // unit, back along the ray
-  float time = 0.0f;         // the ray's instant, which the rays it spawns keep
-  bool entering = false;
-};
-
 namespace {
 
 // Built where it is returned, not copied there: a surface point is large,
@@ -127,14 +116,10 @@ class Recursion {
   // What the primary ray hit, for the auxiliary buffers.
   const SampleResult& seen() const { return seen_; }
 
- private:
-  // Shade: the local Phong model, then the mirror and the refracted rays.
-  Color shade(const ShadingFrame& frame, const Material& material, int depth) {
-    const SurfaceColors colors = surfaceColors(material, frame.surface);
-    const Color ambient = phongAmbient(material, colors, context_.scene.ambient);
-    if (tree_) [[unlikely]]
-      tree_->ambient(ambient);
-    Color color = ambient + directLight(frame, material, colors, depth);
+  // `color`, the local model's at the point, with the mirror and the
+  // refracted rays' added.
+  [[gnu::always_inline]] Color withMirrorAndGlass(Color color, const ShadingFrame& frame,
+                                                  const Material& material, int depth) {
     if (depth >= context_.maxDepth) return color;
     if (material.reflection > 0.0f)
       color += spawned(RayKind::Reflection, Color(material.reflection),
@@ -145,33 +130,63 @@ class Recursion {
     return color;
   }
 
-  // A reflected or refracted ray traced, times its weight.
-  Color spawned(RayKind kind, const Color& weight, const Ray& ray, int depth) {
-    return weight * trace(ray, depth + 1, kind, weight);
-  }
-
-  // The Phong terms of every light that a shadow ray reaches. A light whose
-  // terms are zero at the point (clear glass has no diffuse term, and its
-  // sharp highlight is zero but near the mirror direction) sends no shadow
-  // ray: whatever reached the point, it would add nothing.
-  Color directLight(const ShadingFrame& frame, const Material& material,
-                    const SurfaceColors& colors, int depth) {
-    Color color(0.0f);
-    for (const auto& light : context_.scene.lights) {
-      const LightSample sample = choices_.aimAt(*light, frame.surface.position, depth);
+  // Calls send(light's index, shadow ray, sample, lit) for each light whose
+  // shadow ray is to be traced from the point, counted: not one behind the
+  // surface, nor one whose Phong terms `lit` at the point are zero (clear
+  // glass has no diffuse term, and its sharp highlight is zero but near the
+  // mirror direction): whatever reached the point, it would add nothing.
+  template <typename Send>
+  [[gnu::always_inline]] void forEachShadowRay(const ShadingFrame& frame, const Material& material,
+                                               const SurfaceColors& colors, int depth,
+                                               Send&& send) {
+    const auto& lights = context_.scene.lights;
+    for (std::size_t light = 0; light < lights.size(); ++light) {
+      const LightSample sample = choices_.aimAt(*lights[light], frame.surface.position, depth);
       const std::optional<Ray> shadow =
           shadowRay(frame.surface, frame.normal, sample.toLight, frame.time);
       if (!shadow) continue;
       const Color lit = phongDirect(material, colors, frame.shadingNormal, frame.toViewer, sample);
       if (lit == Color(0.0f)) continue;
       ++counters_.shadowRays;
-      const Color visible = context_.intersector.transmittance(*shadow, 0.0f, sample.distance,
-                                                               counters_.intersections);
-      if (tree_) [[unlikely]]
-        tellShadow(*shadow, *light, sample, visible, frame, material, colors);
-      if (visible == Color(0.0f)) continue;
-      color += visible * lit;
+      send(static_cast<int>(light), *shadow, sample, lit);
     }
+  }
+
+  // What a light adds through what its shadow ray let through.
+  static void addLight(Color& color, const Color& visible, const Color& lit) {
+    if (visible != Color(0.0f)) color += visible * lit;
+  }
+
+ private:
+  // Shade: the local Phong model, then the mirror and the refracted rays.
+  Color shade(const ShadingFrame& frame, const Material& material, int depth) {
+    const SurfaceColors colors = surfaceColors(material, frame.surface);
+    const Color ambient = phongAmbient(material, colors, context_.scene.ambient);
+    if (tree_) [[unlikely]]
+      tree_->ambient(ambient);
+    return withMirrorAndGlass(ambient + directLight(frame, material, colors, depth), frame,
+                              material, depth);
+  }
+
+  // A reflected or refracted ray traced, times its weight.
+  Color spawned(RayKind kind, const Color& weight, const Ray& ray, int depth) {
+    return weight * trace(ray, depth + 1, kind, weight);
+  }
+
+  // The Phong terms of every light that a shadow ray reaches.
+  Color directLight(const ShadingFrame& frame, const Material& material,
+                    const SurfaceColors& colors, int depth) {
+    Color color(0.0f);
+    forEachShadowRay(
+        frame, material, colors, depth,
+        [&](int light, const Ray& shadow, const LightSample& sample, const Color& lit) {
+          const Color visible = context_.intersector.transmittance(shadow, 0.0f, sample.distance,
+                                                                   counters_.intersections);
+          if (tree_) [[unlikely]]
+            tellShadow(shadow, *context_.scene.lights[static_cast<std::size_t>(light)], sample,
+                       visible, frame, material, colors);
+          addLight(color, visible, lit);
+        });
     return color;
   }
 
@@ -245,6 +260,37 @@ SampleResult shadeFirstHit(const TracingContext& context, const Ray& ray, const 
   if (tree) tree->color = color;
   SampleResult result = recursion.seen();
   result.color = color;
+  return result;
+}
+
+FirstHitShading::FirstHitShading(const TracingContext& context, const Ray& ray, const Hit& hit,
+                                 PathChoices& choices, TraceCounters& counters,
+                                 std::vector<LitShadowRay>& shadowRays)
+    : frame_(shadingFrame(ray, hit, context.scene.materialOf(*hit.shape))),
+      material_(&context.scene.materialOf(*hit.shape)),
+      seen_{Color(0.0f), hit.t * glm::length(ray.direction), frame_.surface.normal},
+      firstShadowRay_(shadowRays.size()) {
+  const SurfaceColors colors = surfaceColors(*material_, frame_.surface);
+  ambient_ = phongAmbient(*material_, colors, context.scene.ambient);
+  Recursion recursion(context, choices, counters, nullptr);
+  recursion.forEachShadowRay(
+      frame_, *material_, colors, 1,
+      [&](int light, const Ray& shadow, const LightSample& sample, const Color& lit) {
+        shadowRays.push_back({shadow, sample.distance, lit, light});
+      });
+  endOfShadowRays_ = shadowRays.size();
+}
+
+SampleResult FirstHitShading::finish(const TracingContext& context, PathChoices& choices,
+                                     TraceCounters& counters,
+                                     const std::vector<LitShadowRay>& shadowRays,
+                                     const std::vector<Color>& visible) const {
+  Color direct(0.0f);
+  for (std::size_t i = firstShadowRay_; i < endOfShadowRays_; ++i)
+    Recursion::addLight(direct, visible[i], shadowRays[i].lit);
+  Recursion recursion(context, choices, counters, nullptr);
+  SampleResult result = seen_;
+  result.color = recursion.withMirrorAndGlass(ambient_ + direct, frame_, *material_, 1);
   return result;
 }
 

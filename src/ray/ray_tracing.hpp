@@ -3,7 +3,9 @@
 // with the choices a path makes left open, and the adaptive supersampling.
 #pragma once
 
+#include <cstddef>
 #include <functional>
+#include <vector>
 
 #include "ray/image_sampler.hpp"
 #include "ray/scene_intersector.hpp"
@@ -60,6 +62,54 @@ SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathCho
 // not counted.
 SampleResult shadeFirstHit(const TracingContext& context, const Ray& ray, const Hit* hit,
                            PathChoices& choices, TraceCounters& counters, RayTree* tree = nullptr);
+
+// The surface at a hit as the shading sees it: the normal turned towards the
+// side the ray came from, and whether the ray is entering the solid.
+struct ShadingFrame {
+  SurfacePoint surface;
+  Vec3 normal{0.0f};         // the geometric normal, unit, on the ray's side of the surface
+  Vec3 shadingNormal{0.0f};  // the smooth normal for shading, on the same side
+  Vec3 toViewer{0.0f};       // unit, back along the ray
+  float time = 0.0f;         // the ray's instant, which the rays it spawns keep
+  bool entering = false;
+};
+
+// A shadow ray that Shade sends towards a light, and what the light's Phong
+// terms add to the point where the light arrives unfiltered.
+struct LitShadowRay {
+  Ray ray;
+  float distance;  // to the light, along the ray
+  Color lit;
+  int light;  // the light's place among the scene's
+};
+
+// Shade at a primary ray's first hit, cut in two where its shadow rays are
+// traced: shading many first hits, a caller may trace all their shadow rays
+// between the two halves, together (the hybrid algorithm traces a row's
+// towards each light as packets). The two halves give shadeFirstHit's
+// colour, to the bit, and count the same rays.
+class FirstHitShading {
+ public:
+  // The first half: the point, its ambient term, and the shadow rays it
+  // needs, added to `shadowRays` (the primary ray is not counted).
+  FirstHitShading(const TracingContext& context, const Ray& ray, const Hit& hit,
+                  PathChoices& choices, TraceCounters& counters,
+                  std::vector<LitShadowRay>& shadowRays);
+
+  // The second half, given what each shadow ray let through (`visible`, in
+  // the order of `shadowRays`): the lights' terms, then the reflected and
+  // refracted rays.
+  SampleResult finish(const TracingContext& context, PathChoices& choices, TraceCounters& counters,
+                      const std::vector<LitShadowRay>& shadowRays,
+                      const std::vector<Color>& visible) const;
+
+ private:
+  ShadingFrame frame_;
+  const Material* material_;
+  Color ambient_;
+  SampleResult seen_;
+  std::size_t firstShadowRay_, endOfShadowRays_;  // its own, in the caller's list
+};
 
 // Traces the sample at a raster position ((i + 0.5, j + 0.5) is pixel (i,
 // j)'s centre), recording its rays in `tree` unless that is null.

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "scene/camera.hpp"
+#include "scene/light.hpp"
 #include "scene/shapes/plane.hpp"
 #include "scene/shapes/sphere.hpp"
 
@@ -212,6 +214,66 @@ TEST(WhittedRayTracer, CountsRaysAndTests) {
   EXPECT_EQ(result.stats.value("primary_rays"), 81);
   EXPECT_EQ(result.stats.value("intersection_tests"), 81 * 2);
   EXPECT_EQ(result.buffers.at("cost").at(0, 0).x, 2.0f);
+}
+
+// Shade cut in two, with the shadow rays traced between the halves, gives
+// shadeFirstHit's colour and buffers to the bit, and counts the same rays
+// and tests: at every pixel of a scene of mirror, glass, an opaque sphere in
+// a light's way, and two lights.
+TEST(WhittedRayTracer, ShadesAFirstHitInTwoHalvesAsInOne) {
+  Scene scene = emptyScene();
+  scene.image.width = 40;
+  scene.image.height = 30;
+  scene.ambient = Color(0.3f);
+  Material matte;
+  matte.kd = 0.7f;
+  matte.ks = 0.4f;
+  Material mirror = matte;
+  mirror.reflection = 0.6f;
+  Material glass = matte;
+  glass.transmission = 0.7f;
+  glass.color = {0.9f, 0.6f, 1.0f};
+  glass.ior = 1.5f;
+  scene.shapes.push_back(std::make_unique<Plane>(Vec3(0.0f, -1.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f),
+                                                 addMaterial(scene, matte)));
+  scene.shapes.push_back(
+      std::make_unique<Sphere>(Vec3(-0.8f, 0.0f, 0.5f), 0.7f, addMaterial(scene, mirror)));
+  scene.shapes.push_back(
+      std::make_unique<Sphere>(Vec3(0.9f, -0.2f, -0.3f), 0.6f, addMaterial(scene, glass)));
+  scene.shapes.push_back(std::make_unique<Sphere>(Vec3(0.5f, 1.2f, 0.0f), 0.3f, 0));
+  scene.lights.push_back(std::make_unique<PointLight>(Vec3(1.0f, 3.0f, -2.0f), Color(0.8f)));
+  scene.lights.push_back(std::make_unique<PointLight>(Vec3(-3.0f, 1.0f, -1.0f), Color(0.5f)));
+  const SceneIntersector intersector(scene, Accel::Bvh, 1);
+  const TracingContext context{scene, intersector, 4};
+  const ViewFrame view(scene.camera, scene.image.width, scene.image.height);
+  int shaded = 0;
+  for (int y = 0; y < scene.image.height; ++y) {
+    for (int x = 0; x < scene.image.width; ++x) {
+      const Ray ray = view.primaryRay(x + 0.5f, y + 0.5f);
+      Hit hit;
+      IntersectionCounters search;
+      if (!intersector.nearest(ray, 0.0f, hit, search)) continue;
+      SingleRayChoices whitted;
+      TraceCounters inOne, inTwo;
+      const SampleResult expected = shadeFirstHit(context, ray, &hit, whitted, inOne);
+      std::vector<LitShadowRay> shadowRays;
+      const FirstHitShading halves(context, ray, hit, whitted, inTwo, shadowRays);
+      std::vector<Color> visible;
+      for (const LitShadowRay& shadow : shadowRays)
+        visible.push_back(
+            intersector.transmittance(shadow.ray, 0.0f, shadow.distance, inTwo.intersections));
+      const SampleResult actual = halves.finish(context, whitted, inTwo, shadowRays, visible);
+      ASSERT_EQ(actual.color, expected.color) << "pixel " << x << ", " << y;
+      EXPECT_EQ(actual.depth, expected.depth);
+      EXPECT_EQ(actual.normal, expected.normal);
+      EXPECT_EQ(inTwo.rays(), inOne.rays());
+      EXPECT_EQ(inTwo.reflectionRays + inTwo.refractionRays,
+                inOne.reflectionRays + inOne.refractionRays);
+      EXPECT_EQ(inTwo.intersections.tests, inOne.intersections.tests);
+      ++shaded;
+    }
+  }
+  EXPECT_GT(shaded, 40 * 30 / 2);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 namespace rise {
 namespace {
@@ -62,6 +63,21 @@ Color SceneIntersector::transmittance(const Ray& ray, float tMin, float tMax,
   ShadowCrossings crossings(scene_, filters);
   accelerator_->visitCrossings(ray, tMin, tMax, crossings, counters);
   return crossings.transmittance();
+}
+
+std::array<Color, kPacketSize> SceneIntersector::transmittanceOfPacket(ShadowRayPacket& packet,
+                                                                       float tMin) const {
+  thread_local std::array<std::vector<int>, kPacketSize> filters;
+  std::array<std::optional<ShadowCrossings>, kPacketSize> crossings;
+  std::array<CrossingVisitor*, kPacketSize> visitors{};
+  for (int lane = 0; lane < packet.size; ++lane) {
+    filters[lane].clear();
+    visitors[lane] = &crossings[lane].emplace(scene_, filters[lane]);
+  }
+  accelerator_->visitCrossingsOfPacket(packet, tMin, visitors);
+  std::array<Color, kPacketSize> through{};
+  for (int lane = 0; lane < packet.size; ++lane) through[lane] = crossings[lane]->transmittance();
+  return through;
 }
 
 void SceneIntersector::addBuildStats(Stats& stats) const {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <memory>
 
 #include "core/stats.hpp"
@@ -34,6 +35,10 @@ class SceneIntersector {
   // refracted, so glass casts a lighter shadow, not a caustic. The search
   // stops at the first opaque shape found.
   Color transmittance(const Ray& ray, float tMin, float tMax, IntersectionCounters& counters) const;
+
+  // The transmittance of each ray of the packet from tMin to its own end, as
+  // transmittance() finds it; each ray's cost in the packet's.
+  std::array<Color, kPacketSize> transmittanceOfPacket(ShadowRayPacket& packet, float tMin) const;
 
   // "accel_build_seconds": how long building the structure took.
   void addBuildStats(Stats& stats) const;
