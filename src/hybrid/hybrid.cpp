@@ -356,9 +356,19 @@ class HybridPass {
            !(recording_.trees && recording_.trees->wantsTreeOf({x, y}));
   }
 
-  // A pixel shaded up to its shadow rays.
+  // A pixel shaded up to its shadow rays, made where it is kept: a
+  // shading's frame is large, and copying one just made would wait for its
+  // writes.
   struct WaitingPixel {
+    WaitingPixel(int x, const TracingContext& context, const Pixel& pixel, PathChoices& choices,
+                 TraceCounters& counters, std::vector<LitShadowRay>& shadowRays)
+        : x(x),
+          shadowRaysBefore(shadowRays.size()),
+          shading(context, pixel.ray, pixel.hit, choices, counters, shadowRays),
+          spawnedShadowRays(shadowRays.size() > shadowRaysBefore) {}
+
     int x;
+    std::size_t shadowRaysBefore;
     FirstHitShading shading;
     bool spawnedShadowRays;
   };
@@ -380,13 +390,8 @@ class HybridPass {
   void beginShading(int x, int y, RunOfFirstHits& run, HybridCounters& counters) {
     const Pixel& pixel = at(x, y);
     ++counters.counts[kFromItemBuffer];
-    const std::size_t before = run.shadowRays.size();
     SingleRayChoices whitted;
-    run.pixels.push_back(
-        {x,
-         FirstHitShading(context_, pixel.ray, pixel.hit, whitted, counters.traced, run.shadowRays),
-         false});
-    run.pixels.back().spawnedShadowRays = run.shadowRays.size() > before;
+    run.pixels.emplace_back(x, context_, pixel, whitted, counters.traced, run.shadowRays);
     run.pixelOf.resize(run.shadowRays.size(), x);
   }
 

@@ -276,7 +276,14 @@ FirstHitShading::FirstHitShading(const TracingContext& context, const Ray& ray, 
   recursion.forEachShadowRay(
       frame_, *material_, colors, 1,
       [&](int light, const Ray& shadow, const LightSample& sample, const Color& lit) {
-        shadowRays.push_back({shadow, sample.distance, lit, light});
+        // Filled where it is kept: one made apart and copied in would be read
+        // back just after being written field by field, which waits for the
+        // writes.
+        LitShadowRay& kept = shadowRays.emplace_back();
+        kept.ray = shadow;
+        kept.distance = sample.distance;
+        kept.lit = lit;
+        kept.light = light;
       });
   endOfShadowRays_ = shadowRays.size();
 }

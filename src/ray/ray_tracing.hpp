@@ -78,9 +78,9 @@ struct ShadingFrame {
 // terms add to the point where the light arrives unfiltered.
 struct LitShadowRay {
   Ray ray;
-  float distance;  // to the light, along the ray
-  Color lit;
-  int light;  // the light's place among the scene's
+  float distance = 0.0f;  // to the light, along the ray
+  Color lit{0.0f};
+  int light = 0;  // the light's place among the scene's
 };
 
 // Shade at a primary ray's first hit, cut in two where its shadow rays are
