@@ -19,12 +19,11 @@
 //     where the material has them, through the whole acceleration structure.
 //     A pixel where the item buffer shows nothing takes the background, and
 //     no ray at all. All of a row's first hits being known before any is
-//     shaded, a run of neighbours is shaded up to its shadow rays, which then
-//     go through the structure together, a packet towards each light (rays
-//     from neighbouring points to one light meet the same boxes), before
-//     each pixel's shading is finished: the same rays and colours as one
-//     pixel at a time, at less cost. Whitted's recursion, one ray after
-//     another, cannot gather them so.
+//     shaded, a run of neighbours is shaded as a batch whose shadow rays go
+//     through the structure together, a packet towards each light
+//     (first_hit_batch.hpp): the same rays and colours as one pixel at a
+//     time, at less cost. Whitted's recursion, one ray after another, cannot
+//     gather them so.
 //
 // Silhouettes. Polygons are not the exact surfaces: a curved object's lie
 // inside its true outline, and at any edge rounding may put a pixel centre on
@@ -69,6 +68,7 @@
 #include "raster/bands.hpp"
 #include "raster/visible_surface_renderer.hpp"
 #include "ray/distributed_ray_tracing.hpp"
+#include "ray/first_hit_batch.hpp"
 #include "ray/ray_tracing.hpp"
 
 namespace rise {
@@ -327,111 +327,42 @@ class HybridPass {
     Image* face = result.buffer("face");
   };
 
-  // A row's pixels, a run of neighbours at a time. A pixel whose first hit
-  // the item buffer gave is shaded up to its shadow rays; the run's shadow
-  // rays are then traced together, a packet of neighbours' rays towards one
-  // light at a time, which meet the same boxes of the structure; then each
-  // pixel's shading is finished. The others, and the pixel whose ray tree is
-  // recorded, are shaded whole at once.
+  // A row's pixels, a run of neighbours at a time. The pixels whose first
+  // hits the item buffer gave are shaded as a batch (first_hit_batch.hpp),
+  // their shadow rays traced together; the others, and the pixel whose ray
+  // tree is recorded, are shaded whole at once.
   void shadeRow(int y, int x0, int x1, Images& images, HybridCounters& counters) {
     constexpr int kRun = 64;
-    RunOfFirstHits run;
+    FirstHitBatch batch(context_);
+    std::vector<int> batched;  // the x of each of the batch's pixels
+    SingleRayChoices whitted;
     for (int start = x0; start < x1; start += kRun) {
-      run.clear();
+      batch.clear();
+      batched.clear();
       for (int x = start; x < std::min(x1, start + kRun); ++x) {
-        if (waitsOnShadowRays(x, y))
-          beginShading(x, y, run, counters);
-        else
+        if (!shadedInBatch(x, y)) {
           shade(x, y, images, counters);
+          continue;
+        }
+        ++counters.counts[kFromItemBuffer];
+        batch.add(at(x, y).ray, at(x, y).hit, whitted, counters.traced);
+        batched.push_back(x);
       }
-      traceShadowRays(y, run, counters);
-      for (const WaitingPixel& waiting : run.pixels)
-        finishShading(waiting, y, run, images, counters);
+      batch.traceShadowRays(counters.traced);
+      for (std::size_t i = 0; i < batch.size(); ++i) {
+        const int x = batched[i];
+        at(x, y).tests += static_cast<std::uint32_t>(batch.shadowRayTests(i));
+        const RaysSoFar before(counters.traced);
+        const SampleResult sample = batch.finish(i, whitted, counters.traced);
+        record(x, y, sample, batch.sentShadowRays(i), before, images, counters);
+      }
     }
   }
 
-  bool waitsOnShadowRays(int x, int y) const {
+  bool shadedInBatch(int x, int y) const {
     const Pixel& pixel = at(x, y);
     return pixel.verdict == Verdict::FromItemBuffer && pixel.item.shape >= 0 &&
            !(recording_.trees && recording_.trees->wantsTreeOf({x, y}));
-  }
-
-  // A pixel shaded up to its shadow rays, made where it is kept: a
-  // shading's frame is large, and copying one just made would wait for its
-  // writes.
-  struct WaitingPixel {
-    WaitingPixel(int x, const TracingContext& context, const Pixel& pixel, PathChoices& choices,
-                 TraceCounters& counters, std::vector<LitShadowRay>& shadowRays)
-        : x(x),
-          shadowRaysBefore(shadowRays.size()),
-          shading(context, pixel.ray, pixel.hit, choices, counters, shadowRays),
-          spawnedShadowRays(shadowRays.size() > shadowRaysBefore) {}
-
-    int x;
-    std::size_t shadowRaysBefore;
-    FirstHitShading shading;
-    bool spawnedShadowRays;
-  };
-  // A run's pixels waiting on their shadow rays, and those rays: each one's
-  // pixel, and what it let through once traced.
-  struct RunOfFirstHits {
-    std::vector<WaitingPixel> pixels;
-    std::vector<LitShadowRay> shadowRays;
-    std::vector<int> pixelOf;  // the x of each shadow ray's pixel
-    std::vector<Color> visible;
-
-    void clear() {
-      pixels.clear();
-      shadowRays.clear();
-      pixelOf.clear();
-    }
-  };
-
-  void beginShading(int x, int y, RunOfFirstHits& run, HybridCounters& counters) {
-    const Pixel& pixel = at(x, y);
-    ++counters.counts[kFromItemBuffer];
-    SingleRayChoices whitted;
-    run.pixels.emplace_back(x, context_, pixel, whitted, counters.traced, run.shadowRays);
-    run.pixelOf.resize(run.shadowRays.size(), x);
-  }
-
-  // The run's shadow rays, a packet of up to eight towards one light at a
-  // time; each ray's tests are its pixel's.
-  void traceShadowRays(int y, RunOfFirstHits& run, HybridCounters& counters) {
-    run.visible.resize(run.shadowRays.size());
-    for (int light = 0; light < static_cast<int>(context_.scene.lights.size()); ++light) {
-      ShadowRayPacket packet;
-      std::array<std::size_t, kPacketSize> index{};
-      const auto trace = [&] {
-        const std::array<Color, kPacketSize> through =
-            context_.intersector.transmittanceOfPacket(packet, 0.0f);
-        for (int lane = 0; lane < packet.size; ++lane) {
-          const std::size_t i = index[static_cast<std::size_t>(lane)];
-          run.visible[i] = through[static_cast<std::size_t>(lane)];
-          counters.traced.intersections += packet.costs[static_cast<std::size_t>(lane)];
-          at(run.pixelOf[i], y).tests +=
-              static_cast<std::uint32_t>(packet.costs[static_cast<std::size_t>(lane)].tests);
-        }
-        packet = ShadowRayPacket{};
-      };
-      for (std::size_t i = 0; i < run.shadowRays.size(); ++i) {
-        if (run.shadowRays[i].light != light) continue;
-        index[static_cast<std::size_t>(packet.size)] = i;
-        packet.rays[static_cast<std::size_t>(packet.size)] = run.shadowRays[i].ray;
-        packet.tMax[static_cast<std::size_t>(packet.size++)] = run.shadowRays[i].distance;
-        if (packet.size == kPacketSize) trace();
-      }
-      if (packet.size > 0) trace();
-    }
-  }
-
-  void finishShading(const WaitingPixel& waiting, int y, const RunOfFirstHits& run, Images& images,
-                     HybridCounters& counters) {
-    const RaysSoFar before(counters.traced);
-    SingleRayChoices whitted;
-    const SampleResult sample =
-        waiting.shading.finish(context_, whitted, counters.traced, run.shadowRays, run.visible);
-    record(waiting.x, y, sample, waiting.spawnedShadowRays, before, images, counters);
   }
 
   // The counts of the rays traced so far, to tell what a pixel's shading

@@ -85,9 +85,8 @@ struct LitShadowRay {
 
 // Shade at a primary ray's first hit, cut in two where its shadow rays are
 // traced: shading many first hits, a caller may trace all their shadow rays
-// between the two halves, together (the hybrid algorithm traces a row's
-// towards each light as packets). The two halves give shadeFirstHit's
-// colour, to the bit, and count the same rays.
+// between the two halves, together (first_hit_batch.hpp). The two halves
+// give shadeFirstHit's colour, to the bit, and count the same rays.
 class FirstHitShading {
  public:
   // The first half: the point, its ambient term, and the shadow rays it
@@ -103,12 +102,17 @@ class FirstHitShading {
                       const std::vector<LitShadowRay>& shadowRays,
                       const std::vector<Color>& visible) const;
 
+  // Its own shadow rays' places in the list the first half added them to:
+  // [firstShadowRay(), endOfShadowRays()).
+  std::size_t firstShadowRay() const { return firstShadowRay_; }
+  std::size_t endOfShadowRays() const { return endOfShadowRays_; }
+
  private:
   ShadingFrame frame_;
   const Material* material_;
   Color ambient_;
   SampleResult seen_;
-  std::size_t firstShadowRay_, endOfShadowRays_;  // its own, in the caller's list
+  std::size_t firstShadowRay_, endOfShadowRays_;
 };
 
 // Traces the sample at a raster position ((i + 0.5, j + 0.5) is pixel (i,
