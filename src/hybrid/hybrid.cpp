@@ -44,7 +44,12 @@
 // Anti-aliasing, depth of field and motion blur come from the accumulation
 // passes of the visible-surface algorithms (visible_surface_renderer.hpp):
 // each pass does both passes above at its own offset in the pixel, point of
-// the lens and instant of the shutter interval.
+// the lens and instant of the shutter interval. The accumulation passes are
+// taken a few at a time: pass 1 for each, then pass 2 for all of them, a
+// pixel's samples shaded one after another and their shadow rays in the same
+// packets. A pixel's samples are nearly the same rays: the later ones find
+// in the cache the boxes of the structure and the surface the first one
+// fetched, as the samples of Whitted's pixel, traced one after another, do.
 //
 // Its steps, for a student: the item buffer filling, a scanline a step, the
 // items in their materials' colours; then each band of pixels shaded, with
@@ -59,6 +64,7 @@
 #include <deque>
 #include <optional>
 #include <set>
+#include <span>
 #include <string_view>
 #include <tuple>
 #include <vector>
@@ -119,69 +125,118 @@ struct PassRecording {
   int index;
 };
 
-// What pass 2 knows of a pixel.
+// What pass 2 knows of a pixel, from its first sweep to its shading, kept
+// small: a group holds it for every pixel of each of its passes.
 struct Pixel {
-  Ray ray;  // its primary ray, made once for all that tests and shades it
   Item item;
-  Hit hit;  // the ray's hit on its item's exact surface
+  // The primary ray's hit on its item's exact surface (Hit, but the shape,
+  // which is the item's).
+  float t = kInfinity;
+  int primitive = 0;
+  Vec2 barycentric{0.0f};
+  std::uint32_t tests = 0;  // intersection tests made for it, for the "cost" buffer
   Verdict verdict = Verdict::FromItemBuffer;
   bool mirrorOrGlass = false;  // its shading spawned reflected or refracted rays
-  std::uint32_t tests = 0;     // intersection tests made for it, for the "cost" buffer
+
+  void keep(const Hit& hit) {
+    t = hit.t;
+    primitive = hit.primitive;
+    barycentric = hit.barycentric;
+  }
+  Hit hit(const Scene& scene) const {
+    return {t, scene.shapes[static_cast<std::size_t>(item.shape)].get(), primitive, barycentric};
+  }
 };
 
-// Both passes of one accumulation pass.
-class HybridPass {
+// The pass's image and buffers, filled pixel by pixel.
+struct Images {
+  Images(const RenderSettings& settings, bool whatWasHit)
+      : result{blankResult(settings, whatWasHit)} {}
+  Images(const Images&) = delete;  // the pointers are into its own result
+
+  RenderResult result;
+  Image& image = result.image;
+  Image* cost = result.buffer("cost");  // or none, where not wanted
+  // None but in the first pass, and there only those wanted.
+  Image* depth = result.buffer("depth");
+  Image* normal = result.buffer("normal");
+  Image* face = result.buffer("face");
+};
+
+// One pass of a group: where its rays go, where it reports, what its first
+// sweep found of each pixel and the images its shading fills.
+struct GroupPass {
+  GroupPass(const AccumulationPass& pass, const PassRecording& recording,
+            std::vector<Pixel>& pixels, const RenderSettings& settings)
+      : pass(pass), recording(recording), pixels(pixels), images(settings, recording.index == 0) {
+    pixels.resize(static_cast<std::size_t>(settings.width) * settings.height);
+  }
+
+  const AccumulationPass& pass;
+  const PassRecording recording;
+  std::vector<Pixel>& pixels;  // the render's, kept from group to group
+  Images images;
+};
+
+// The counters of a group's shading: its first pass's apart, for that
+// pass's steps.
+struct GroupCounters {
+  HybridCounters firstPass, otherPasses;
+
+  GroupCounters& operator+=(const GroupCounters& other) {
+    firstPass += other.firstPass;
+    otherPasses += other.otherPasses;
+    return *this;
+  }
+};
+
+// Both passes of a group of accumulation passes: pass 1, and the first sweep
+// of pass 2, pass after pass; then the shading of them all, a pixel's
+// samples one after another.
+class HybridGroup {
  public:
-  HybridPass(const TracingContext& context, const TessellatedScene& tessellated,
-             const RenderSettings& settings, const AccumulationPass& pass, RenderObserver& observer,
-             const PassRecording& recording, std::vector<Pixel>& pixels)
+  HybridGroup(const TracingContext& context, const TessellatedScene& tessellated,
+              const RenderSettings& settings, std::span<const AccumulationPass> passes,
+              int firstPass, RenderObserver& observer, StepRecorder* trees,
+              std::vector<std::vector<Pixel>>& pixels)
       : context_(context),
         tessellated_(tessellated),
         settings_(settings),
-        pass_(pass),
-        recording_(recording),
         observer_(observer),
         workers_(settings.threads, observer),
-        view_(context.scene.camera, settings.width, settings.height),
-        projection_(view_, pass.pixelOffset, pass.lens),
-        pixels_(pixels) {
-    pixels_.resize(static_cast<std::size_t>(settings.width) * settings.height);
+        view_(context.scene.camera, settings.width, settings.height) {
+    pixels.resize(std::max(pixels.size(), passes.size()));
+    for (std::size_t i = 0; i < passes.size(); ++i) {
+      const PassRecording recording{i == 0 ? observer.stepRecorder() : nullptr, trees,
+                                    firstPass + static_cast<int>(i)};
+      passes_.emplace_back(passes[i], recording, pixels[i], settings);
+    }
   }
 
-  RenderResult run(HybridCounters& counters) {
-    Stats stats;
-    auto start = std::chrono::steady_clock::now();
-    items_.emplace(context_.scene, tessellated_, projection_, settings_.backfaceCulling, workers_,
-                   recording_.steps, stats);
-    counters.itemBufferSeconds += secondsSince(start);
-
-    start = std::chrono::steady_clock::now();
-    BandWork found = inBands<BandWork>(
-        [&](int y, int x0, int x1, BandWork& band) {
-          for (int x = x0; x < x1; ++x) findHit(x, y, band);
-        },
-        [](const PixelRect&, int, const BandWork&) {});
-    counters += found.counters;
-    followOutlines(std::move(found.seeds), counters);
-    Images images(settings_, recording_.index == 0);
-    counters += inBands<HybridCounters>(
-        [&](int y, int x0, int x1, HybridCounters& band) { shadeRow(y, x0, x1, images, band); },
-        [&](const PixelRect& band, int task, const HybridCounters& bandCounters) {
-          if (recording_.steps)
-            recording_.steps->record(
-                raysStep(band, bandCounters,
+  std::vector<RenderResult> run(HybridCounters& counters) {
+    for (GroupPass& pass : passes_) findHits(pass, counters);
+    const auto start = std::chrono::steady_clock::now();
+    const GroupCounters shaded = inBands<GroupCounters>(
+        [&](int y, int x0, int x1, GroupCounters& band) { shadeRow(y, x0, x1, band); },
+        [&](const PixelRect& band, int task, const GroupCounters& bandCounters) {
+          const GroupPass& first = passes_.front();
+          if (first.recording.steps)
+            first.recording.steps->record(
+                raysStep(band, bandCounters.firstPass,
                          [&](int x, int y) {
-                           const Pixel& pixel = at(x, y);
+                           const Pixel& pixel = at(first, x, y);
                            return RayPassPixel{pixel.verdict, pixel.mirrorOrGlass};
                          }),
                 settings_.height + task);
-          observer_.onPixelsDone(band, images.image);
+          observer_.onPixelsDone(band, first.images.image);
         });
+    counters += shaded.firstPass;
+    counters += shaded.otherPasses;
     counters.raySeconds += secondsSince(start);
 
-    stats.add("covered_pixels", static_cast<double>(found.coveredPixels));
-    images.result.stats = std::move(stats);
-    return std::move(images.result);
+    std::vector<RenderResult> results;
+    for (GroupPass& pass : passes_) results.push_back(std::move(pass.images.result));
+    return results;
   }
 
  private:
@@ -205,9 +260,11 @@ class HybridPass {
     }
   };
 
-  Pixel& at(int x, int y) { return pixels_[static_cast<std::size_t>(y) * settings_.width + x]; }
-  const Pixel& at(int x, int y) const {
-    return pixels_[static_cast<std::size_t>(y) * settings_.width + x];
+  Pixel& at(GroupPass& pass, int x, int y) const {
+    return pass.pixels[static_cast<std::size_t>(y) * settings_.width + x];
+  }
+  const Pixel& at(const GroupPass& pass, int x, int y) const {
+    return pass.pixels[static_cast<std::size_t>(y) * settings_.width + x];
   }
 
   // Calls visitRow(y, x0, x1, part) for every row of every band, band by
@@ -231,13 +288,39 @@ class HybridPass {
     if (y + 1 < settings_.height) visit(x, y + 1);
   }
 
-  // The primary ray of the pixel in this pass: through its sample position,
-  // from its point of the lens, at its instant.
-  Ray rayAt(int x, int y) const {
+  // The primary ray of the pixel in the pass: through its sample position,
+  // from its point of the lens, at its instant. Made again wherever needed,
+  // the same to the bit, rather than kept for every pixel of every pass.
+  Ray rayAt(const GroupPass& pass, int x, int y) const {
     Ray ray = thinLensRay(
-        view_, Vec2(static_cast<float>(x), static_cast<float>(y)) + pass_.pixelOffset, pass_.lens);
-    ray.time = pass_.time;
+        view_, Vec2(static_cast<float>(x), static_cast<float>(y)) + pass.pass.pixelOffset,
+        pass.pass.lens);
+    ray.time = pass.pass.time;
     return ray;
+  }
+
+  // Pass 1, the item buffer, and the first sweep of pass 2, the pixels' hits
+  // on their items and the outlines followed.
+  void findHits(GroupPass& pass, HybridCounters& counters) {
+    Stats stats;
+    auto start = std::chrono::steady_clock::now();
+    const ViewProjection projection(view_, pass.pass.pixelOffset, pass.pass.lens);
+    const ItemBuffer items(context_.scene, tessellated_, projection, settings_.backfaceCulling,
+                           workers_, pass.recording.steps, stats);
+    counters.itemBufferSeconds += secondsSince(start);
+
+    start = std::chrono::steady_clock::now();
+    BandWork found = inBands<BandWork>(
+        [&](int y, int x0, int x1, BandWork& band) {
+          for (int x = x0; x < x1; ++x) findHit(pass, items, x, y, band);
+        },
+        [](const PixelRect&, int, const BandWork&) {});
+    counters += found.counters;
+    followOutlines(pass, std::move(found.seeds), counters);
+    counters.raySeconds += secondsSince(start);
+
+    stats.add("covered_pixels", static_cast<double>(found.coveredPixels));
+    pass.images.result.stats = std::move(stats);
   }
 
   // The nearest hit of the pixel's ray on the item's exact surface alone.
@@ -259,7 +342,7 @@ class HybridPass {
   bool coversNearer(const Item& item, const Ray& ray, Pixel& pixel, HybridCounters& counters) {
     Hit hit;
     return intersect(item, ray, pixel, hit, counters) &&
-           std::tie(hit.t, item) < std::tie(pixel.hit.t, pixel.item);
+           std::tie(hit.t, item) < std::tie(pixel.t, pixel.item);
   }
 
   void fallBack(Pixel& pixel) {
@@ -269,25 +352,29 @@ class HybridPass {
   // Pass 2 begins: the pixel's ray against its own item's exact surface, then
   // against each other item seen beside it; those that cover it nearer are
   // the seeds of followOutlines.
-  void findHit(int x, int y, BandWork& band) {
-    Pixel& pixel = at(x, y);
-    const int face = items_->faceAt(x, y);
-    pixel = Pixel{};  // what the last accumulation pass left goes
-    pixel.ray = rayAt(x, y);
-    pixel.item = items_->itemOf(face);
+  void findHit(GroupPass& pass, const ItemBuffer& items, int x, int y, BandWork& band) {
+    Pixel& pixel = at(pass, x, y);
+    const int face = items.faceAt(x, y);
+    const Ray ray = rayAt(pass, x, y);
+    pixel = Pixel{};  // what the last group left goes
+    pixel.item = items.itemOf(face);
     band.coveredPixels += pixel.item.shape >= 0 ? 1 : 0;
-    if (pixel.item.shape >= 0 && !intersect(pixel.item, pixel.ray, pixel, pixel.hit, band.counters))
+    if (pass.images.face)
+      pass.images.face->at(x, y) = Color(static_cast<float>(items.sceneFaceAt(x, y)));
+    Hit hit;
+    if (pixel.item.shape >= 0 && !intersect(pixel.item, ray, pixel, hit, band.counters))
       pixel.verdict = Verdict::Outside;
+    pixel.keep(hit);
     std::array<Item, 4> tested;
     int count = 0;
     forEachNeighbour(x, y, [&](int nx, int ny) {
-      const int besideFace = items_->faceAt(nx, ny);
+      const int besideFace = items.faceAt(nx, ny);
       if (besideFace == face || besideFace < 0) return;
-      const Item item = items_->itemOf(besideFace);
+      const Item item = items.itemOf(besideFace);
       const auto end = tested.begin() + count;
       if (item == pixel.item || std::find(tested.begin(), end, item) != end) return;
       tested[static_cast<std::size_t>(count++)] = item;
-      if (!coversNearer(item, pixel.ray, pixel, band.counters)) return;
+      if (!coversNearer(item, ray, pixel, band.counters)) return;
       fallBack(pixel);
       band.seeds.push_back({x, y, item});
     });
@@ -296,7 +383,7 @@ class HybridPass {
   // From each seed outwards, while the item keeps covering the pixels it
   // reaches: the true outline beyond the polygons. Seldom more than a pixel
   // or two, so done on one thread.
-  void followOutlines(std::vector<Seed> seeds, HybridCounters& counters) {
+  void followOutlines(GroupPass& pass, std::vector<Seed> seeds, HybridCounters& counters) {
     std::set<std::tuple<int, int, Item>> tested;
     for (const Seed& seed : seeds) tested.insert({seed.x, seed.y, seed.item});
     std::deque<Seed> pending(seeds.begin(), seeds.end());
@@ -304,65 +391,68 @@ class HybridPass {
       const Seed seed = pending.front();
       pending.pop_front();
       forEachNeighbour(seed.x, seed.y, [&](int x, int y) {
-        Pixel& pixel = at(x, y);
+        Pixel& pixel = at(pass, x, y);
         if (pixel.item == seed.item || !tested.insert({x, y, seed.item}).second) return;
-        if (!coversNearer(seed.item, pixel.ray, pixel, counters)) return;
+        if (!coversNearer(seed.item, rayAt(pass, x, y), pixel, counters)) return;
         fallBack(pixel);
         pending.push_back({x, y, seed.item});
       });
     }
   }
 
-  // The pass's image and buffers, filled pixel by pixel.
-  struct Images {
-    Images(const RenderSettings& settings, bool whatWasHit)
-        : result{blankResult(settings, whatWasHit)} {}
-
-    RenderResult result;
-    Image& image = result.image;
-    Image* cost = result.buffer("cost");  // or none, where not wanted
-    // None but in the first pass, and there only those wanted.
-    Image* depth = result.buffer("depth");
-    Image* normal = result.buffer("normal");
-    Image* face = result.buffer("face");
-  };
-
   // A row's pixels, a run of neighbours at a time. The pixels whose first
   // hits the item buffer gave are shaded as a batch (first_hit_batch.hpp),
-  // their shadow rays traced together; the others, and the pixel whose ray
-  // tree is recorded, are shaded whole at once.
-  void shadeRow(int y, int x0, int x1, Images& images, HybridCounters& counters) {
+  // their shadow rays traced together: each pixel's samples in the group's
+  // passes one after another, so that a packet's rays leave from one pixel,
+  // or two, towards one light, and meet nearly the same boxes. The others,
+  // and the pixel whose ray tree is recorded, are shaded whole at once.
+  void shadeRow(int y, int x0, int x1, GroupCounters& counters) {
     constexpr int kRun = 64;
     FirstHitBatch batch(context_);
-    std::vector<int> batched;  // the x of each of the batch's pixels
+    struct Batched {
+      GroupPass* pass;
+      int x;
+    };
+    std::vector<Batched> batched;  // where each of the batch's hits is from
     SingleRayChoices whitted;
+    const auto countersOf = [&](const GroupPass& pass) -> HybridCounters& {
+      return &pass == &passes_.front() ? counters.firstPass : counters.otherPasses;
+    };
     for (int start = x0; start < x1; start += kRun) {
       batch.clear();
       batched.clear();
       for (int x = start; x < std::min(x1, start + kRun); ++x) {
-        if (!shadedInBatch(x, y)) {
-          shade(x, y, images, counters);
-          continue;
+        for (GroupPass& pass : passes_) {
+          HybridCounters& passCounters = countersOf(pass);
+          if (!shadedInBatch(pass, x, y)) {
+            shade(pass, x, y, passCounters);
+            continue;
+          }
+          ++passCounters.counts[kFromItemBuffer];
+          batched.push_back({&pass, x});
+          batch.add(rayAt(pass, x, y), at(pass, x, y).hit(context_.scene), whitted,
+                    passCounters.traced);
         }
-        ++counters.counts[kFromItemBuffer];
-        batch.add(at(x, y).ray, at(x, y).hit, whitted, counters.traced);
-        batched.push_back(x);
       }
-      batch.traceShadowRays(counters.traced);
+      batch.traceShadowRays();
       for (std::size_t i = 0; i < batch.size(); ++i) {
-        const int x = batched[i];
-        at(x, y).tests += static_cast<std::uint32_t>(batch.shadowRayTests(i));
-        const RaysSoFar before(counters.traced);
-        const SampleResult sample = batch.finish(i, whitted, counters.traced);
-        record(x, y, sample, batch.sentShadowRays(i), before, images, counters);
+        GroupPass& pass = *batched[i].pass;
+        const int x = batched[i].x;
+        HybridCounters& passCounters = countersOf(pass);
+        const IntersectionCounters shadowRayCosts = batch.shadowRayCosts(i);
+        passCounters.traced.intersections += shadowRayCosts;
+        at(pass, x, y).tests += static_cast<std::uint32_t>(shadowRayCosts.tests);
+        const RaysSoFar before(passCounters.traced);
+        const SampleResult sample = batch.finish(i, whitted, passCounters.traced);
+        record(pass, x, y, sample, batch.sentShadowRays(i), before, passCounters);
       }
     }
   }
 
-  bool shadedInBatch(int x, int y) const {
-    const Pixel& pixel = at(x, y);
+  bool shadedInBatch(const GroupPass& pass, int x, int y) const {
+    const Pixel& pixel = at(pass, x, y);
     return pixel.verdict == Verdict::FromItemBuffer && pixel.item.shape >= 0 &&
-           !(recording_.trees && recording_.trees->wantsTreeOf({x, y}));
+           !(pass.recording.trees && pass.recording.trees->wantsTreeOf({x, y}));
   }
 
   // The counts of the rays traced so far, to tell what a pixel's shading
@@ -378,63 +468,75 @@ class HybridPass {
 
   // Whitted's Shade from the item's hit, or his whole primary ray where the
   // pixel fell back.
-  void shade(int x, int y, Images& images, HybridCounters& counters) {
-    Pixel& pixel = at(x, y);
+  void shade(GroupPass& pass, int x, int y, HybridCounters& counters) {
+    const Pixel& pixel = at(pass, x, y);
     TraceCounters& traced = counters.traced;
     const RaysSoFar before(traced);
     SingleRayChoices whitted;
     // A tree is made only for the pixel recorded.
     std::optional<RayTree> tree;
-    if (recording_.trees && recording_.trees->wantsTreeOf({x, y})) {
+    if (pass.recording.trees && pass.recording.trees->wantsTreeOf({x, y})) {
       tree.emplace();
       tree->pixel = {x, y};
-      tree->sample = recording_.index;
-      tree->raster = Vec2(x, y) + pass_.pixelOffset;
+      tree->sample = pass.recording.index;
+      tree->raster = Vec2(x, y) + pass.pass.pixelOffset;
     }
     RayTree* const treeHere = tree ? &*tree : nullptr;
+    const Ray ray = rayAt(pass, x, y);
     SampleResult sample;
     if (pixel.verdict != Verdict::FromItemBuffer) {
       ++counters.counts[pixel.verdict == Verdict::Outside ? kOutside : kInside];
-      sample = tracePrimary(context_, pixel.ray, whitted, traced, treeHere);
+      sample = tracePrimary(context_, ray, whitted, traced, treeHere);
     } else {
       ++counters.counts[kFromItemBuffer];
-      const Hit* hit = pixel.item.shape >= 0 ? &pixel.hit : nullptr;
-      sample = shadeFirstHit(context_, pixel.ray, hit, whitted, traced, treeHere);
+      const Hit hit = pixel.item.shape >= 0 ? pixel.hit(context_.scene) : Hit{};
+      sample = shadeFirstHit(context_, ray, pixel.item.shape >= 0 ? &hit : nullptr, whitted, traced,
+                             treeHere);
     }
-    if (tree) recording_.trees->recordTree(std::move(*tree));
-    record(x, y, sample, traced.shadowRays > before.shadow, before, images, counters);
+    if (tree) pass.recording.trees->recordTree(std::move(*tree));
+    record(pass, x, y, sample, traced.shadowRays > before.shadow, before, counters);
   }
 
   // A pixel's sample, into the pass's images, and what its shading spawned
   // since `before`, into the counters.
-  void record(int x, int y, const SampleResult& sample, bool spawnedShadowRays,
-              const RaysSoFar& before, Images& images, HybridCounters& counters) {
-    Pixel& pixel = at(x, y);
+  void record(GroupPass& pass, int x, int y, const SampleResult& sample, bool spawnedShadowRays,
+              const RaysSoFar& before, HybridCounters& counters) {
+    Pixel& pixel = at(pass, x, y);
     const TraceCounters& traced = counters.traced;
     pixel.mirrorOrGlass = traced.reflectionRays + traced.refractionRays > before.mirrorOrGlass;
     counters.counts[kSpawning] += spawnedShadowRays || pixel.mirrorOrGlass;
     counters.counts[kMirrorOrGlass] += pixel.mirrorOrGlass;
     pixel.tests += static_cast<std::uint32_t>(traced.intersections.tests - before.tests);
 
+    Images& images = pass.images;
     images.image.at(x, y) = sample.color;
     if (images.cost) images.cost->at(x, y) = Color(static_cast<float>(pixel.tests));
     if (images.depth) images.depth->at(x, y) = Color(sample.depth);
     if (images.normal) images.normal->at(x, y) = sample.normal;
-    if (images.face) images.face->at(x, y) = Color(static_cast<float>(items_->sceneFaceAt(x, y)));
   }
 
   const TracingContext& context_;
   const TessellatedScene& tessellated_;
   const RenderSettings& settings_;
-  const AccumulationPass& pass_;
-  const PassRecording recording_;
   RenderObserver& observer_;
   const Workers workers_;
   const ViewFrame view_;
-  const ViewProjection projection_;
-  std::optional<ItemBuffer> items_;
-  std::vector<Pixel>& pixels_;  // the render's, kept from pass to pass
+  std::deque<GroupPass> passes_;  // a deque: a pass's images point into the pass
 };
+
+// Four passes in a group: a packet of eight shadow rays then leaves from two
+// neighbouring pixels, and more passes gain little more and take memory.
+// Fewer where the pixels' records and images of four passes would take more
+// than a quarter of a gigabyte (a large image), and at least one.
+int largestGroup(const RenderSettings& settings) {
+  constexpr std::size_t kPasses = 4;
+  constexpr std::size_t kGroupBytes = std::size_t{256} << 20;
+  const std::size_t images = settings.wantsBuffer("cost") ? 2 : 1;
+  const std::size_t passBytes =
+      std::max<std::size_t>(1, static_cast<std::size_t>(settings.width) * settings.height *
+                                   (sizeof(Pixel) + images * sizeof(Color)));
+  return static_cast<int>(std::clamp<std::size_t>(kGroupBytes / passBytes, 1, kPasses));
+}
 
 }  // namespace
 
@@ -443,15 +545,13 @@ RenderResult HybridRenderer::render(const Scene& scene, const RenderSettings& se
   const SceneIntersector intersector(scene, settings.accel, settings.threads);
   const TracingContext context{scene, intersector, settings.maxDepth};
   HybridCounters counters;
-  int passes = 0;
-  std::vector<Pixel> pixels;
-  RenderResult result = renderInPasses(
-      scene, settings, observer,
-      [&](const TessellatedScene& tessellated, const AccumulationPass& pass,
-          RenderObserver& passObserver) {
-        const PassRecording recording{passObserver.stepRecorder(), observer.stepRecorder(),
-                                      passes++};
-        return HybridPass(context, tessellated, settings, pass, passObserver, recording, pixels)
+  std::vector<std::vector<Pixel>> pixels;
+  RenderResult result = renderInPassGroups(
+      scene, settings, observer, largestGroup(settings),
+      [&](const TessellatedScene& tessellated, std::span<const AccumulationPass> passes,
+          int firstPass, RenderObserver& groupObserver) {
+        return HybridGroup(context, tessellated, settings, passes, firstPass, groupObserver,
+                           observer.stepRecorder(), pixels)
             .run(counters);
       });
   addHybridStats(result.stats, counters);

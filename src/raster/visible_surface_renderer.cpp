@@ -84,24 +84,27 @@ std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
 
 namespace {
 
-// Reports the progress of one pass as its share of all of them; the steps of
-// the first pass alone are recorded, the others repeating them.
-class PassObserver final : public RenderObserver {
+// Reports the progress of a group of passes as its share of all of them;
+// the steps of the first pass alone are recorded, the others repeating them.
+class PassGroupObserver final : public RenderObserver {
  public:
-  PassObserver(RenderObserver& whole, int pass, int passes)
-      : whole_(whole), pass_(pass), passes_(passes) {}
+  PassGroupObserver(RenderObserver& whole, int firstPass, int groupPasses, int passes)
+      : whole_(whole), firstPass_(firstPass), groupPasses_(groupPasses), passes_(passes) {}
   void onProgress(double fractionDone) override {
-    whole_.onProgress((pass_ + fractionDone) / passes_);
+    whole_.onProgress((firstPass_ + fractionDone * groupPasses_) / passes_);
   }
   bool cancelled() const override { return whole_.cancelled(); }
-  StepRecorder* stepRecorder() override { return pass_ == 0 ? whole_.stepRecorder() : nullptr; }
+  StepRecorder* stepRecorder() override {
+    return firstPass_ == 0 ? whole_.stepRecorder() : nullptr;
+  }
   void onPixelsDone(const PixelRect& region, const Image& image) override {
     whole_.onPixelsDone(region, image);
   }
 
  private:
   RenderObserver& whole_;
-  int pass_;
+  int firstPass_;
+  int groupPasses_;
   int passes_;
 };
 
@@ -146,8 +149,9 @@ RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSett
 // tracers' samples. The scene is tessellated again only when a pass's time
 // differs from the last. The auxiliary buffers are the first pass's, but
 // "cost", which adds up over the passes where it is wanted, as do the counters.
-RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
-                            RenderObserver& observer, const PassRenderer& renderPass) {
+RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settings,
+                                RenderObserver& observer, int largestGroup,
+                                const PassGroupRenderer& renderGroup) {
   const std::vector<AccumulationPass> passes = accumulationPasses(scene.camera, settings);
   const int passCount = static_cast<int>(passes.size());
   TessellatedScene tessellated = tessellateForRaster(scene, settings, passes[0].time);
@@ -155,22 +159,30 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
   const Workers workers(settings.threads);
 
   RenderResult accumulated;
-  for (int pass = 0; pass < passCount && !observer.cancelled(); ++pass) {
-    if (pass > 0 && passes[pass].time != passes[pass - 1].time)
-      tessellated = tessellateForRaster(scene, settings, passes[pass].time);
-    PassObserver passObserver(observer, pass, passCount);
-    RenderResult result = renderPass(tessellated, passes[pass], passObserver);
-    film.addImage(std::move(result.image), passes[pass].pixelOffset, workers);
-    if (pass == 0) {
-      accumulated = std::move(result);
-      continue;
+  for (int first = 0; first < passCount && !observer.cancelled();) {
+    if (first > 0 && passes[first].time != passes[first - 1].time)
+      tessellated = tessellateForRaster(scene, settings, passes[first].time);
+    int end = first + 1;
+    while (end < passCount && end - first < largestGroup && passes[end].time == passes[first].time)
+      ++end;
+    const std::span<const AccumulationPass> group(passes.begin() + first, passes.begin() + end);
+    PassGroupObserver groupObserver(observer, first, end - first, passCount);
+    std::vector<RenderResult> results = renderGroup(tessellated, group, first, groupObserver);
+    for (int pass = first; pass < end; ++pass) {
+      RenderResult& result = results[static_cast<std::size_t>(pass - first)];
+      film.addImage(std::move(result.image), passes[pass].pixelOffset, workers);
+      if (pass == 0) {
+        accumulated = std::move(result);
+        continue;
+      }
+      accumulated.stats.accumulate(result.stats);
+      if (Image* cost = accumulated.buffer("cost")) {
+        const Image& passCost = result.buffers.at("cost");
+        for (int y = 0; y < settings.height; ++y)
+          for (int x = 0; x < settings.width; ++x) cost->at(x, y) += passCost.at(x, y);
+      }
     }
-    accumulated.stats.accumulate(result.stats);
-    if (Image* cost = accumulated.buffer("cost")) {
-      const Image& passCost = result.buffers.at("cost");
-      for (int y = 0; y < settings.height; ++y)
-        for (int x = 0; x < settings.width; ++x) cost->at(x, y) += passCost.at(x, y);
-    }
+    first = end;
   }
   accumulated.image = film.resolve(workers);
   // A frame is drawn whole, each polygon at once: a region is cut from it.
@@ -180,6 +192,18 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
                         covered > 0.0 ? accumulated.stats.value("pixels_written") / covered : 0.0);
   accumulated.stats.add("samples_per_pixel", passCount);
   return accumulated;
+}
+
+RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
+                            RenderObserver& observer, const PassRenderer& renderPass) {
+  return renderInPassGroups(
+      scene, settings, observer, 1,
+      [&](const TessellatedScene& tessellated, std::span<const AccumulationPass> passes,
+          int /*firstPass*/, RenderObserver& passObserver) {
+        std::vector<RenderResult> results;
+        results.push_back(renderPass(tessellated, passes[0], passObserver));
+        return results;
+      });
 }
 
 RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,

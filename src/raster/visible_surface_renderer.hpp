@@ -16,6 +16,8 @@
 #pragma once
 
 #include <functional>
+#include <span>
+#include <vector>
 
 #include "raster/raster_frame.hpp"
 #include "raster/tessellated_scene.hpp"
@@ -70,10 +72,25 @@ using PassRenderer = std::function<RenderResult(
 
 // The accumulation buffer: the passes the settings' samples call for, each
 // rendered by `renderPass` and added to the film through the reconstruction
-// filter. What every visible-surface algorithm renders by, and the hybrid
-// algorithm too.
+// filter. What every visible-surface algorithm renders by.
 RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
                             RenderObserver& observer, const PassRenderer& renderPass);
+
+// Renders a group of consecutive passes that share an instant, all of the
+// scene tessellated then, the first of them pass number `firstPass`: for
+// each, in order, what a PassRenderer renders. The observer reports the
+// group's progress; it records steps only in the group that holds pass 0,
+// whose steps alone are to be recorded.
+using PassGroupRenderer = std::function<std::vector<RenderResult>(
+    const TessellatedScene& tessellated, std::span<const AccumulationPass> passes, int firstPass,
+    RenderObserver& observer)>;
+
+// renderInPasses, the passes taken in groups of at most `largestGroup`, for
+// an algorithm that does better with several passes in hand at once: the
+// hybrid algorithm shades a pixel's samples one after another.
+RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settings,
+                                RenderObserver& observer, int largestGroup,
+                                const PassGroupRenderer& renderGroup);
 
 // "polygons_in", "polygons_culled", ...: what the projection did.
 void addProjectionStats(Stats& stats, const ScreenGeometry& screen);

@@ -16,9 +16,9 @@ void FirstHitBatch::add(const Ray& ray, const Hit& hit, PathChoices& choices,
   hits_.emplace_back(context_, ray, hit, choices, counters, shadowRays_);
 }
 
-void FirstHitBatch::traceShadowRays(TraceCounters& counters) {
+void FirstHitBatch::traceShadowRays() {
   visible_.resize(shadowRays_.size());
-  shadowTests_.resize(shadowRays_.size());
+  shadowCosts_.resize(shadowRays_.size());
   for (int light = 0; light < static_cast<int>(context_.scene.lights.size()); ++light) {
     ShadowRayPacket packet;
     std::array<std::size_t, kPacketSize> rayOfLane{};
@@ -27,8 +27,7 @@ void FirstHitBatch::traceShadowRays(TraceCounters& counters) {
           context_.intersector.transmittanceOfPacket(packet, 0.0f);
       for (std::size_t lane = 0; lane < static_cast<std::size_t>(packet.size); ++lane) {
         visible_[rayOfLane[lane]] = through[lane];
-        shadowTests_[rayOfLane[lane]] = packet.costs[lane].tests;
-        counters.intersections += packet.costs[lane];
+        shadowCosts_[rayOfLane[lane]] = packet.costs[lane];
       }
       packet = ShadowRayPacket{};
     };
@@ -48,11 +47,11 @@ bool FirstHitBatch::sentShadowRays(std::size_t i) const {
   return hits_[i].endOfShadowRays() > hits_[i].firstShadowRay();
 }
 
-std::uint64_t FirstHitBatch::shadowRayTests(std::size_t i) const {
-  std::uint64_t tests = 0;
+IntersectionCounters FirstHitBatch::shadowRayCosts(std::size_t i) const {
+  IntersectionCounters costs;
   for (std::size_t ray = hits_[i].firstShadowRay(); ray < hits_[i].endOfShadowRays(); ++ray)
-    tests += shadowTests_[ray];
-  return tests;
+    costs += shadowCosts_[ray];
+  return costs;
 }
 
 SampleResult FirstHitBatch::finish(std::size_t i, PathChoices& choices,

@@ -11,7 +11,6 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdint>
 #include <vector>
 
 #include "ray/ray_tracing.hpp"
@@ -31,14 +30,14 @@ class FirstHitBatch {
 
   std::size_t size() const { return hits_.size(); }
 
-  // Traces every hit's shadow rays, a packet towards one light at a time;
-  // their tests are counted into `counters`.
-  void traceShadowRays(TraceCounters& counters);
+  // Traces every hit's shadow rays, a packet towards one light at a time,
+  // the hits' rays in the order the hits were added.
+  void traceShadowRays();
 
-  // Of hit i, once the shadow rays are traced: whether it sent any, and the
-  // intersection tests they cost.
+  // Of hit i, once the shadow rays are traced: whether it sent any, and what
+  // they cost, for the caller to count where the hit belongs.
   bool sentShadowRays(std::size_t i) const;
-  std::uint64_t shadowRayTests(std::size_t i) const;
+  IntersectionCounters shadowRayCosts(std::size_t i) const;
 
   // Hit i's shading finished: the lights' terms, then its reflected and
   // refracted rays.
@@ -48,8 +47,8 @@ class FirstHitBatch {
   const TracingContext& context_;
   std::vector<FirstHitShading> hits_;
   std::vector<LitShadowRay> shadowRays_;
-  std::vector<Color> visible_;              // what each shadow ray let through
-  std::vector<std::uint64_t> shadowTests_;  // and the tests it cost
+  std::vector<Color> visible_;                     // what each shadow ray let through
+  std::vector<IntersectionCounters> shadowCosts_;  // and what it cost
 };
 
 }  // namespace rise
