@@ -96,6 +96,17 @@ TEST_P(HybridOnRandomScene, ItsItemBufferIsTheScanlinesFaceBuffer) {
   expectTheScanlinesFaceBuffer(random, oneSampleAPixel(random));
 }
 
+// The face buffers are the first pass's: with jittered samples, one whose
+// projection is moved in the pixel.
+TEST_P(HybridOnRandomScene, ItsItemBufferIsTheScanlinesFaceBufferAtAnyOffset) {
+  const Scene random = scene();
+  RenderSettings settings = oneSampleAPixel(random);
+  settings.sampling.samples = 3;
+  settings.sampling.pattern = SamplePattern::Jittered;
+  settings.seed = static_cast<std::uint64_t>(GetParam());
+  expectTheScanlinesFaceBuffer(random, settings);
+}
+
 INSTANTIATE_TEST_SUITE_P(Seeds, HybridOnRandomScene, testing::Range(1, 13));
 
 // Several samples a pixel on the same regular grid in every pixel: the

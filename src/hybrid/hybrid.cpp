@@ -197,11 +197,12 @@ class HybridGroup {
  public:
   HybridGroup(const TracingContext& context, const TessellatedScene& tessellated,
               const RenderSettings& settings, std::span<const AccumulationPass> passes,
-              int firstPass, RenderObserver& observer, StepRecorder* trees,
-              std::vector<std::vector<Pixel>>& pixels)
+              int firstPass, PassProjections& projections, RenderObserver& observer,
+              StepRecorder* trees, std::vector<std::vector<Pixel>>& pixels)
       : context_(context),
         tessellated_(tessellated),
         settings_(settings),
+        projections_(projections),
         observer_(observer),
         workers_(settings.threads, observer),
         view_(context.scene.camera, settings.width, settings.height) {
@@ -304,9 +305,9 @@ class HybridGroup {
   void findHits(GroupPass& pass, HybridCounters& counters) {
     Stats stats;
     auto start = std::chrono::steady_clock::now();
-    const ViewProjection projection(view_, pass.pass.pixelOffset, pass.pass.lens);
-    const ItemBuffer items(context_.scene, tessellated_, projection, settings_.backfaceCulling,
-                           workers_, pass.recording.steps, stats);
+    const ItemBuffer items(
+        context_.scene, tessellated_, projections_.of(pass.recording.index, tessellated_, workers_),
+        settings_.width, settings_.height, workers_, pass.recording.steps, stats);
     counters.itemBufferSeconds += secondsSince(start);
 
     start = std::chrono::steady_clock::now();
@@ -518,6 +519,7 @@ class HybridGroup {
   const TracingContext& context_;
   const TessellatedScene& tessellated_;
   const RenderSettings& settings_;
+  PassProjections& projections_;
   RenderObserver& observer_;
   const Workers workers_;
   const ViewFrame view_;
@@ -549,9 +551,9 @@ RenderResult HybridRenderer::render(const Scene& scene, const RenderSettings& se
   RenderResult result = renderInPassGroups(
       scene, settings, observer, largestGroup(settings),
       [&](const TessellatedScene& tessellated, std::span<const AccumulationPass> passes,
-          int firstPass, RenderObserver& groupObserver) {
-        return HybridGroup(context, tessellated, settings, passes, firstPass, groupObserver,
-                           observer.stepRecorder(), pixels)
+          int firstPass, PassProjections& projections, RenderObserver& groupObserver) {
+        return HybridGroup(context, tessellated, settings, passes, firstPass, projections,
+                           groupObserver, observer.stepRecorder(), pixels)
             .run(counters);
       });
   addHybridStats(result.stats, counters);

@@ -1,5 +1,7 @@
 #include "hybrid/item_buffer.hpp"
 
+#include <utility>
+
 #include "raster/scanline.hpp"
 #include "raster/visible_surface_renderer.hpp"
 
@@ -9,13 +11,13 @@ namespace rise {
 // be told as the item buffer's: the scanline's colours are not the image's
 // yet, which the second pass settles.
 ItemBuffer::ItemBuffer(const Scene& scene, const TessellatedScene& tessellated,
-                       const ViewProjection& view, bool backfaceCulling, const Workers& workers,
+                       ScreenGeometry screen, int width, int height, const Workers& workers,
                        StepRecorder* steps, Stats& stats)
     : scene_(scene),
       tessellated_(tessellated),
-      screen_(projectScene(tessellated, view, backfaceCulling, workers)),
+      screen_(std::move(screen)),
       sweepSteps_(steps ? std::make_unique<StepRecorder>(steps->budget()) : nullptr),
-      faces_(view.width(), view.height(), sweepSteps_.get()) {
+      faces_(width, height, sweepSteps_.get()) {
   addProjectionStats(stats, screen_);
   sweepScanlines(screen_, workers, faces_, stats);
   if (steps) recordFilling(sweepSteps_->allSteps(), *steps);

@@ -27,12 +27,13 @@ struct Item {
 
 class ItemBuffer {
  public:
-  // Projects the tessellated scene through `view` and sweeps it scanline by
-  // scanline, adding the projection's and the sweep's counters to `stats`.
-  // Each scanline is a step for `steps` (when not null): the scanline's own
-  // step, its items drawn in their materials' colours.
-  ItemBuffer(const Scene& scene, const TessellatedScene& tessellated, const ViewProjection& view,
-             bool backfaceCulling, const Workers& workers, StepRecorder* steps, Stats& stats);
+  // Sweeps the tessellated scene, projected (`screen`), scanline by scanline
+  // over a width x height image, adding the projection's and the sweep's
+  // counters to `stats`. Each scanline is a step for `steps` (when not
+  // null): the scanline's own step, its items drawn in their materials'
+  // colours.
+  ItemBuffer(const Scene& scene, const TessellatedScene& tessellated, ScreenGeometry screen,
+             int width, int height, const Workers& workers, StepRecorder* steps, Stats& stats);
 
   Item itemAt(int x, int y) const { return itemOf(faces_.at(x, y)); }
   // The screen face seen at the pixel, -1 for none, and the item it lies on.

@@ -217,7 +217,15 @@ int ScreenGeometry::addPolygon(int face, std::span<const Vec3> polygonCorners) {
 
 ScreenGeometry projectScene(const TessellatedScene& scene, const ViewProjection& view,
                             bool backfaceCulling, const Workers& workers) {
-  FaceProjector projector(scene, view, backfaceCulling);
+  ScreenGeometry screen = projectUnshifted(scene, view, backfaceCulling, workers);
+  moveBy(screen, view.shift(), workers);
+  return screen;
+}
+
+ScreenGeometry projectUnshifted(const TessellatedScene& scene, const ViewProjection& view,
+                                bool backfaceCulling, const Workers& workers) {
+  const ViewProjection unshifted = view.unshifted();
+  FaceProjector projector(scene, unshifted, backfaceCulling);
   const int vertexCount = static_cast<int>(scene.vertices.size());
   workers.forEachRange(vertexCount, kFacesPerRange,
                        [&](int, int begin, int end) { projector.viewVertices(begin, end); });
@@ -228,6 +236,19 @@ ScreenGeometry projectScene(const TessellatedScene& scene, const ViewProjection&
     projector.findKept(begin, end, ranges[range]);
   });
   return written(projector, ranges, workers);
+}
+
+void moveBy(ScreenGeometry& screen, Vec2 shift, const Workers& workers) {
+  if (shift == Vec2(0.0f)) return;
+  const auto move = [&](auto& items, auto&& moveOne) {
+    workers.forEachRange(static_cast<int>(items.size()), kFacesPerRange,
+                         [&](int, int begin, int end) {
+                           for (int i = begin; i < end; ++i)
+                             moveOne(items[static_cast<std::size_t>(i)]);
+                         });
+  };
+  move(screen.corners, [&](Vec3& corner) { corner = Vec3(Vec2(corner) + shift, corner.z); });
+  move(screen.faces, [&](ScreenFace& face) { face.origin += shift; });
 }
 
 }  // namespace rise

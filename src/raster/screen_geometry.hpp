@@ -100,8 +100,18 @@ struct ScreenGeometry {
 };
 
 // Runs the pipeline on the workers; the result does not depend on their
-// number.
+// number. It is the projection from the view's point of the lens, not moved
+// (projectUnshifted), then moved by the view's shift in the pixel (moveBy),
+// so that the passes of an accumulation buffer that see the scene from one
+// point of the lens may share the first part.
 ScreenGeometry projectScene(const TessellatedScene& scene, const ViewProjection& view,
                             bool backfaceCulling, const Workers& workers);
+ScreenGeometry projectUnshifted(const TessellatedScene& scene, const ViewProjection& view,
+                                bool backfaceCulling, const Workers& workers);
+
+// Moves the polygons by `shift` in raster coordinates: their corners, and
+// their faces' affine functions, which are kept relative to a point of the
+// face (RasterAffine) and so need only that point moved.
+void moveBy(ScreenGeometry& screen, Vec2 shift, const Workers& workers);
 
 }  // namespace rise

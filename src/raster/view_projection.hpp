@@ -53,27 +53,38 @@ class ViewProjection {
   const Mat4& cameraFromWorld() const { return cameraFromWorld_; }
   Vec3 toCamera(const Vec3& world) const { return Vec3(cameraFromWorld_ * glm::vec4(world, 1.0f)); }
 
-  // The raster position of a point in front of the eye (n > 0).
+  // The raster position of a point in front of the eye (n > 0): where the
+  // projection from the point of the lens puts it, moved by the shift.
   Vec2 toRaster(const Vec3& camera) const {
     const float inverseDepth = 1.0f / camera.z;
-    return {xScale_ * camera.x * inverseDepth + xOffset_,
-            yScale_ * camera.y * inverseDepth + yOffset_};
+    return Vec2(xScale_ * camera.x * inverseDepth + xCentre_,
+                yScale_ * camera.y * inverseDepth + yCentre_) +
+           shift_;
   }
 
   // The direction, in camera coordinates, from the eye through a raster
   // position: (u / n, v / n, 1), the inverse of toRaster. Both are affine in
   // the raster coordinates.
   Vec3 cameraDirection(const Vec2& raster) const {
-    return {(raster.x - xOffset_) / xScale_, (raster.y - yOffset_) / yScale_, 1.0f};
+    const Vec2 unshifted = raster - shift_;
+    return {(unshifted.x - xCentre_) / xScale_, (unshifted.y - yCentre_) / yScale_, 1.0f};
   }
 
   // The affine function of raster position a x + b y + c that equals the
   // linear function dot(directionForm, cameraDirection((x, y))).
   glm::dvec3 rasterForm(const glm::dvec3& directionForm) const;
 
+  // How far the image is moved in raster coordinates: the pixel's centre
+  // less the sample offset.
+  Vec2 shift() const { return shift_; }
+  // The same projection, not moved: what every pass that sees the scene
+  // from the same point of the lens has in common.
+  ViewProjection unshifted() const;
+
   // The view volume in camera coordinates, as five planes (a, b, c, d) with
   // a u + b v + c n + d >= 0 inside: in front of the near plane at distance
-  // `nearDistance`, and within `margin` pixels of the image's four sides.
+  // `nearDistance`, and within `margin` pixels of the four sides of the image
+  // not moved; the same volume, then, whatever the sample offset.
   std::array<glm::vec4, 5> viewVolume(float nearDistance, float margin) const;
 
   const Vec3& eye() const { return eye_; }
@@ -84,8 +95,9 @@ class ViewProjection {
   Mat4 cameraFromWorld_;
   Vec3 eye_;
   int width_, height_;
-  // raster x = xScale u / n + xOffset, raster y = yScale v / n + yOffset.
-  float xScale_, xOffset_, yScale_, yOffset_;
+  // raster x = (xScale u / n + xCentre) + shift.x, and likewise y.
+  float xScale_, xCentre_, yScale_, yCentre_;
+  Vec2 shift_;
 };
 
 }  // namespace rise

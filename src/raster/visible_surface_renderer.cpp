@@ -138,9 +138,10 @@ class FrameRegions final : public Progress {
 RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSettings& settings,
                                             RenderObserver& observer) const {
   return renderInPasses(scene, settings, observer,
-                        [&](const TessellatedScene& tessellated, const AccumulationPass& pass,
-                            RenderObserver& passObserver) {
-                          return renderSample(scene, tessellated, settings, pass, passObserver);
+                        [&](const TessellatedScene& tessellated, const ScreenGeometry& screen,
+                            const AccumulationPass& pass, RenderObserver& passObserver) {
+                          return renderProjected(scene, tessellated, screen, settings, pass,
+                                                 passObserver);
                         });
 }
 
@@ -157,6 +158,8 @@ RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settin
   TessellatedScene tessellated = tessellateForRaster(scene, settings, passes[0].time);
   Film film(settings.width, settings.height, settings.sampling.filter);
   const Workers workers(settings.threads);
+  const ViewFrame frame(scene.camera, settings.width, settings.height);
+  PassProjections projections(frame, passes, settings.backfaceCulling);
 
   RenderResult accumulated;
   for (int first = 0; first < passCount && !observer.cancelled();) {
@@ -167,7 +170,8 @@ RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settin
       ++end;
     const std::span<const AccumulationPass> group(passes.begin() + first, passes.begin() + end);
     PassGroupObserver groupObserver(observer, first, end - first, passCount);
-    std::vector<RenderResult> results = renderGroup(tessellated, group, first, groupObserver);
+    std::vector<RenderResult> results =
+        renderGroup(tessellated, group, first, projections, groupObserver);
     for (int pass = first; pass < end; ++pass) {
       RenderResult& result = results[static_cast<std::size_t>(pass - first)];
       film.addImage(std::move(result.image), passes[pass].pixelOffset, workers);
@@ -196,14 +200,41 @@ RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settin
 
 RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
                             RenderObserver& observer, const PassRenderer& renderPass) {
+  const Workers workers(settings.threads);
   return renderInPassGroups(
       scene, settings, observer, 1,
       [&](const TessellatedScene& tessellated, std::span<const AccumulationPass> passes,
-          int /*firstPass*/, RenderObserver& passObserver) {
+          int firstPass, PassProjections& projections, RenderObserver& passObserver) {
+        const ScreenGeometry screen = projections.of(firstPass, tessellated, workers);
         std::vector<RenderResult> results;
-        results.push_back(renderPass(tessellated, passes[0], passObserver));
+        results.push_back(renderPass(tessellated, screen, passes[0], passObserver));
         return results;
       });
+}
+
+ScreenGeometry PassProjections::of(int pass, const TessellatedScene& tessellated,
+                                   const Workers& workers) {
+  const ViewProjection view = viewOf(pass);
+  if (keptFor_ < 0 || !seeFromTheSamePoint(keptFor_, pass))
+    unshifted_ = projectUnshifted(tessellated, view, backfaceCulling_, workers);
+  keptFor_ = pass;
+  const bool nextShares =
+      pass + 1 < static_cast<int>(passes_.size()) && seeFromTheSamePoint(pass, pass + 1);
+  ScreenGeometry screen = nextShares ? unshifted_ : std::move(unshifted_);
+  if (!nextShares) keptFor_ = -1;
+  moveBy(screen, view.shift(), workers);
+  return screen;
+}
+
+ViewProjection PassProjections::viewOf(int pass) const {
+  const AccumulationPass& of = passes_[static_cast<std::size_t>(pass)];
+  return ViewProjection(frame_, of.pixelOffset, of.lens);
+}
+
+bool PassProjections::seeFromTheSamePoint(int pass, int other) const {
+  const AccumulationPass& a = passes_[static_cast<std::size_t>(pass)];
+  const AccumulationPass& b = passes_[static_cast<std::size_t>(other)];
+  return a.time == b.time && frame_.lensPoint(a.lens) == frame_.lensPoint(b.lens);
 }
 
 RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
@@ -211,10 +242,19 @@ RenderResult VisibleSurfaceRenderer::renderSample(const Scene& scene,
                                                   const RenderSettings& settings,
                                                   const AccumulationPass& pass,
                                                   RenderObserver& observer) const {
+  const ViewProjection view(ViewFrame(scene.camera, settings.width, settings.height),
+                            pass.pixelOffset, pass.lens);
+  const ScreenGeometry screen = projectScene(tessellated, view, settings.backfaceCulling,
+                                             Workers(settings.threads, observer));
+  return renderProjected(scene, tessellated, screen, settings, pass, observer);
+}
+
+RenderResult VisibleSurfaceRenderer::renderProjected(
+    const Scene& scene, const TessellatedScene& tessellated, const ScreenGeometry& screen,
+    const RenderSettings& settings, const AccumulationPass& pass, RenderObserver& observer) const {
   const Workers workers(settings.threads, observer);
   const ViewProjection view(ViewFrame(scene.camera, settings.width, settings.height),
                             pass.pixelOffset, pass.lens);
-  const ScreenGeometry screen = projectScene(tessellated, view, settings.backfaceCulling, workers);
   std::optional<ShadowMaps> shadowMaps;
   if (settings.shadows == ShadowMethod::Map)
     shadowMaps.emplace(scene, tessellated, shadowMapSettings(settings), workers);

@@ -49,6 +49,10 @@ class VisibleSurfaceRenderer : public Renderer {
   RenderResult renderSample(const Scene& scene, const TessellatedScene& tessellated,
                             const RenderSettings& settings, const AccumulationPass& pass,
                             RenderObserver& observer) const;
+  // The same, of the scene as the pass sees it projected (projectScene).
+  RenderResult renderProjected(const Scene& scene, const TessellatedScene& tessellated,
+                               const ScreenGeometry& screen, const RenderSettings& settings,
+                               const AccumulationPass& pass, RenderObserver& observer) const;
 
  protected:
   // Finds the face seen at each pixel and tells the frame, adding the
@@ -65,10 +69,38 @@ class VisibleSurfaceRenderer : public Renderer {
 std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
                                                  const RenderSettings& settings);
 
-// Renders one pass, of the scene tessellated at the pass's time: the image
-// with the auxiliary buffers the settings want, and the counters.
-using PassRenderer = std::function<RenderResult(
-    const TessellatedScene& tessellated, const AccumulationPass& pass, RenderObserver& observer)>;
+// The scene as each pass of a render sees it, projected (projectScene). The
+// projection from a point of the lens is made once for the consecutive
+// passes that see the scene from there at one instant: each pass's is it,
+// moved by the pass's shift in the pixel. Without depth of field and motion
+// blur, that is once for all the passes.
+class PassProjections {
+ public:
+  PassProjections(const ViewFrame& frame, std::span<const AccumulationPass> passes,
+                  bool backfaceCulling)
+      : frame_(frame), passes_(passes), backfaceCulling_(backfaceCulling) {}
+
+  // Pass number `pass`'s projection of the scene tessellated at its instant,
+  // the passes asked for in their order.
+  ScreenGeometry of(int pass, const TessellatedScene& tessellated, const Workers& workers);
+
+ private:
+  ViewProjection viewOf(int pass) const;
+  bool seeFromTheSamePoint(int pass, int other) const;
+
+  const ViewFrame& frame_;
+  std::span<const AccumulationPass> passes_;
+  bool backfaceCulling_;
+  ScreenGeometry unshifted_;  // the projection from pass keptFor_'s point of the lens
+  int keptFor_ = -1;          // -1: none kept
+};
+
+// Renders one pass, of the scene tessellated at the pass's time and projected
+// as the pass sees it: the image with the auxiliary buffers the settings
+// want, and the counters.
+using PassRenderer =
+    std::function<RenderResult(const TessellatedScene& tessellated, const ScreenGeometry& screen,
+                               const AccumulationPass& pass, RenderObserver& observer)>;
 
 // The accumulation buffer: the passes the settings' samples call for, each
 // rendered by `renderPass` and added to the film through the reconstruction
@@ -78,12 +110,12 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
 
 // Renders a group of consecutive passes that share an instant, all of the
 // scene tessellated then, the first of them pass number `firstPass`: for
-// each, in order, what a PassRenderer renders. The observer reports the
-// group's progress; it records steps only in the group that holds pass 0,
-// whose steps alone are to be recorded.
+// each, in order, what a PassRenderer renders, its projection asked of
+// `projections`. The observer reports the group's progress; it records steps
+// only in the group that holds pass 0, whose steps alone are to be recorded.
 using PassGroupRenderer = std::function<std::vector<RenderResult>(
     const TessellatedScene& tessellated, std::span<const AccumulationPass> passes, int firstPass,
-    RenderObserver& observer)>;
+    PassProjections& projections, RenderObserver& observer)>;
 
 // renderInPasses, the passes taken in groups of at most `largestGroup`, for
 // an algorithm that does better with several passes in hand at once: the

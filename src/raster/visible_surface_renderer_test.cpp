@@ -1,0 +1,74 @@
+#include "raster/visible_surface_renderer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "scene/shapes/box.hpp"
+#include "support/raster_testing.hpp"
+
+namespace rise {
+namespace {
+
+using raster_testing::addTriangle;
+using raster_testing::sceneSeenFrom;
+
+void expectTheSameToTheBit(const ScreenGeometry& actual, const ScreenGeometry& expected) {
+  ASSERT_EQ(actual.corners.size(), expected.corners.size());
+  for (std::size_t i = 0; i < actual.corners.size(); ++i)
+    ASSERT_EQ(actual.corners[i], expected.corners[i]) << "corner " << i;
+  ASSERT_EQ(actual.faces.size(), expected.faces.size());
+  for (std::size_t i = 0; i < actual.faces.size(); ++i) {
+    const ScreenFace& a = actual.faces[i];
+    const ScreenFace& e = expected.faces[i];
+    ASSERT_EQ(a.sceneFace, e.sceneFace) << "face " << i;
+    ASSERT_EQ(a.frontFacing, e.frontFacing) << "face " << i;
+    ASSERT_EQ(a.origin, e.origin) << "face " << i;
+    for (int k = 0; k < 3; ++k) ASSERT_EQ(a.weights[k].coefficients, e.weights[k].coefficients);
+    ASSERT_EQ(a.inverseDepth.coefficients, e.inverseDepth.coefficients) << "face " << i;
+  }
+  ASSERT_EQ(actual.polygons.size(), expected.polygons.size());
+  for (std::size_t i = 0; i < actual.polygons.size(); ++i) {
+    ASSERT_EQ(actual.polygons[i].face, expected.polygons[i].face);
+    ASSERT_EQ(actual.polygons[i].firstCorner, expected.polygons[i].firstCorner);
+    ASSERT_EQ(actual.polygons[i].cornerCount, expected.polygons[i].cornerCount);
+  }
+}
+
+// The passes that see the scene from one point of the lens share one
+// projection, each moving it by its own shift in the pixel; what each pass
+// is given is still what projecting the scene for it alone gives, to the
+// bit, through a pinhole (every pass shares) and through a lens (none does).
+// The box and a triangle that the sides of the image cut make polygons that
+// clipping shapes.
+TEST(PassProjections, GiveEachPassWhatProjectingForItAloneGives) {
+  Scene scene = sceneSeenFrom(Vec3(2.0f, 3.0f, -6.0f), 72, 40);
+  scene.shapes.push_back(std::make_unique<Box>(Vec3(-1.0f), Vec3(1.0f), 0));
+  addTriangle(scene, Vec3(-30.0f, -1.0f, -2.0f), Vec3(30.0f, -1.0f, -2.0f),
+              Vec3(0.0f, -1.0f, 40.0f));
+  for (float aperture : {0.0f, 0.3f}) {
+    scene.camera.aperture = aperture;
+    scene.camera.focalDistance = 6.0f;
+    RenderRequest request;
+    request.image = {72, 40, 6, SamplePattern::Jittered, FilterKind::Box, {}};
+    const RenderSettings settings = settingsFor(scene, request);
+    const std::vector<AccumulationPass> passes = accumulationPasses(scene.camera, settings);
+    const TessellatedScene tessellated = tessellateForRaster(scene, settings);
+    const ViewFrame frame(scene.camera, settings.width, settings.height);
+    const Workers workers(2);
+    PassProjections projections(frame, passes, true);
+    std::vector<ScreenGeometry> given;
+    for (int pass = 0; pass < static_cast<int>(passes.size()); ++pass) {
+      SCOPED_TRACE("aperture " + std::to_string(aperture) + ", pass " + std::to_string(pass));
+      const ViewProjection view(frame, passes[pass].pixelOffset, passes[pass].lens);
+      ASSERT_NE(view.shift(), Vec2(0.0f));
+      const ScreenGeometry shared = projections.of(pass, tessellated, workers);
+      expectTheSameToTheBit(shared, projectScene(tessellated, view, true, workers));
+      given.push_back(shared);
+    }
+    // The passes' projections differ: each was moved by its own shift.
+    ASSERT_FALSE(given[0].corners.empty());
+    EXPECT_NE(given[0].corners[0], given[1].corners[0]);
+  }
+}
+
+}  // namespace
+}  // namespace rise
