@@ -60,8 +60,10 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstddef>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <set>
 #include <span>
@@ -148,6 +150,24 @@ struct Pixel {
   }
 };
 
+// Room for the records of every pixel of a pass, left unfilled: the first
+// sweep of pass 2 writes each, on the workers, so that the memory is first
+// touched on all of them and not on one (a record holds nothing to destroy,
+// and bytes may hold it: Pixel is an aggregate).
+class PixelRecords {
+ public:
+  void makeRoomFor(std::size_t count) {
+    if (count == count_) return;
+    bytes_ = std::make_unique_for_overwrite<std::byte[]>(count * sizeof(Pixel));
+    count_ = count;
+  }
+  Pixel& operator[](std::size_t i) const { return reinterpret_cast<Pixel*>(bytes_.get())[i]; }
+
+ private:
+  std::unique_ptr<std::byte[]> bytes_;
+  std::size_t count_ = 0;
+};
+
 // The pass's image and buffers, filled pixel by pixel.
 struct Images {
   Images(const RenderSettings& settings, bool whatWasHit)
@@ -166,15 +186,15 @@ struct Images {
 // One pass of a group: where its rays go, where it reports, what its first
 // sweep found of each pixel and the images its shading fills.
 struct GroupPass {
-  GroupPass(const AccumulationPass& pass, const PassRecording& recording,
-            std::vector<Pixel>& pixels, const RenderSettings& settings)
+  GroupPass(const AccumulationPass& pass, const PassRecording& recording, PixelRecords& pixels,
+            const RenderSettings& settings)
       : pass(pass), recording(recording), pixels(pixels), images(settings, recording.index == 0) {
-    pixels.resize(static_cast<std::size_t>(settings.width) * settings.height);
+    pixels.makeRoomFor(static_cast<std::size_t>(settings.width) * settings.height);
   }
 
   const AccumulationPass& pass;
   const PassRecording recording;
-  std::vector<Pixel>& pixels;  // the render's, kept from group to group
+  PixelRecords& pixels;  // the render's, kept from group to group
   Images images;
 };
 
@@ -198,7 +218,7 @@ class HybridGroup {
   HybridGroup(const TracingContext& context, const TessellatedScene& tessellated,
               const RenderSettings& settings, std::span<const AccumulationPass> passes,
               int firstPass, PassProjections& projections, RenderObserver& observer,
-              StepRecorder* trees, std::vector<std::vector<Pixel>>& pixels)
+              StepRecorder* trees, std::vector<PixelRecords>& pixels)
       : context_(context),
         tessellated_(tessellated),
         settings_(settings),
@@ -357,7 +377,7 @@ class HybridGroup {
     Pixel& pixel = at(pass, x, y);
     const int face = items.faceAt(x, y);
     const Ray ray = rayAt(pass, x, y);
-    pixel = Pixel{};  // what the last group left goes
+    pixel = Pixel{};  // its first write in the render, or what the last group left goes
     pixel.item = items.itemOf(face);
     band.coveredPixels += pixel.item.shape >= 0 ? 1 : 0;
     if (pass.images.face)
@@ -547,7 +567,7 @@ RenderResult HybridRenderer::render(const Scene& scene, const RenderSettings& se
   const SceneIntersector intersector(scene, settings.accel, settings.threads);
   const TracingContext context{scene, intersector, settings.maxDepth};
   HybridCounters counters;
-  std::vector<std::vector<Pixel>> pixels;
+  std::vector<PixelRecords> pixels;
   RenderResult result = renderInPassGroups(
       scene, settings, observer, largestGroup(settings),
       [&](const TessellatedScene& tessellated, std::span<const AccumulationPass> passes,
