@@ -28,12 +28,16 @@ class RegionCopier final : public RenderObserver {
       }
     if (cancelAfterFirst) cancelled_ = true;
   }
+  void onProgress(double) override {
+    if (cancelAtFirstProgress) cancelled_ = true;
+  }
   bool cancelled() const override { return cancelled_; }
 
   Image copied;
   Image reports;
   int regions = 0;
   bool cancelAfterFirst = false;
+  bool cancelAtFirstProgress = false;
 
  private:
   std::mutex mutex_;
@@ -79,6 +83,22 @@ TEST(ProgressiveImage, ACancelledRenderStopsAtItsTasksEnd) {
     // The tasks under way when the first ended, at most one a thread, and
     // none after.
     EXPECT_LE(observer.regions, settings.threads) << renderer->name();
+  }
+}
+
+// Cancelled at the first step of work that reports its progress, with
+// several samples a pixel: whatever an algorithm was doing, it returns, and
+// reads nothing it had not made yet (the sanitized build watches).
+TEST(ProgressiveImage, ACancelledRenderStopsWhereverItWas) {
+  const Scene scene = classic();
+  RenderSettings settings = settingsAt(scene, 160, 120);
+  settings.sampling.samples = 4;
+  settings.sampling.pattern = SamplePattern::Jittered;
+  for (const Renderer* renderer : allRenderers()) {
+    RegionCopier observer(settings.width, settings.height);
+    observer.cancelAtFirstProgress = true;
+    renderer->render(scene, settings, observer);
+    EXPECT_TRUE(observer.cancelled()) << renderer->name();
   }
 }
 

@@ -337,7 +337,9 @@ class HybridGroup {
         },
         [](const PixelRect&, int, const BandWork&) {});
     counters += found.counters;
-    followOutlines(pass, std::move(found.seeds), counters);
+    // A cancelled sweep left pixels unwritten, which neither the outlines
+    // nor the shading (whose workers take no task then) may read.
+    if (!workers_.cancelled()) followOutlines(pass, std::move(found.seeds), counters);
     counters.raySeconds += secondsSince(start);
 
     stats.add("covered_pixels", static_cast<double>(found.coveredPixels));
