@@ -325,9 +325,9 @@ class HybridGroup {
   void findHits(GroupPass& pass, HybridCounters& counters) {
     Stats stats;
     auto start = std::chrono::steady_clock::now();
-    const ItemBuffer items(
-        context_.scene, tessellated_, projections_.of(pass.recording.index, tessellated_, workers_),
-        settings_.width, settings_.height, workers_, pass.recording.steps, stats);
+    const ItemBuffer items(context_.scene, tessellated_,
+                           projections_.of(pass.recording.index, tessellated_), settings_.width,
+                           settings_.height, workers_, pass.recording.steps, stats);
     counters.itemBufferSeconds += secondsSince(start);
 
     start = std::chrono::steady_clock::now();
@@ -512,9 +512,9 @@ class HybridGroup {
       sample = tracePrimary(context_, ray, whitted, traced, treeHere);
     } else {
       ++counters.counts[kFromItemBuffer];
-      const Hit hit = pixel.item.shape >= 0 ? pixel.hit(context_.scene) : Hit{};
-      sample = shadeFirstHit(context_, ray, pixel.item.shape >= 0 ? &hit : nullptr, whitted, traced,
-                             treeHere);
+      const bool seen = pixel.item.shape >= 0;
+      const Hit hit = seen ? pixel.hit(context_.scene) : Hit{};
+      sample = shadeFirstHit(context_, ray, seen ? &hit : nullptr, whitted, traced, treeHere);
     }
     if (tree) pass.recording.trees->recordTree(std::move(*tree));
     record(pass, x, y, sample, traced.shadowRays > before.shadow, before, counters);

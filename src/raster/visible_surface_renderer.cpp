@@ -159,7 +159,7 @@ RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settin
   Film film(settings.width, settings.height, settings.sampling.filter);
   const Workers workers(settings.threads);
   const ViewFrame frame(scene.camera, settings.width, settings.height);
-  PassProjections projections(frame, passes, settings.backfaceCulling);
+  PassProjections projections(frame, passes, settings.backfaceCulling, workers);
 
   RenderResult accumulated;
   for (int first = 0; first < passCount && !observer.cancelled();) {
@@ -200,29 +200,27 @@ RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settin
 
 RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
                             RenderObserver& observer, const PassRenderer& renderPass) {
-  const Workers workers(settings.threads);
   return renderInPassGroups(
       scene, settings, observer, 1,
       [&](const TessellatedScene& tessellated, std::span<const AccumulationPass> passes,
           int firstPass, PassProjections& projections, RenderObserver& passObserver) {
-        const ScreenGeometry screen = projections.of(firstPass, tessellated, workers);
+        const ScreenGeometry screen = projections.of(firstPass, tessellated);
         std::vector<RenderResult> results;
         results.push_back(renderPass(tessellated, screen, passes[0], passObserver));
         return results;
       });
 }
 
-ScreenGeometry PassProjections::of(int pass, const TessellatedScene& tessellated,
-                                   const Workers& workers) {
+ScreenGeometry PassProjections::of(int pass, const TessellatedScene& tessellated) {
   const ViewProjection view = viewOf(pass);
   if (keptFor_ < 0 || !seeFromTheSamePoint(keptFor_, pass))
-    unshifted_ = projectUnshifted(tessellated, view, backfaceCulling_, workers);
+    unshifted_ = projectUnshifted(tessellated, view, backfaceCulling_, workers_);
   keptFor_ = pass;
   const bool nextShares =
       pass + 1 < static_cast<int>(passes_.size()) && seeFromTheSamePoint(pass, pass + 1);
   ScreenGeometry screen = nextShares ? unshifted_ : std::move(unshifted_);
   if (!nextShares) keptFor_ = -1;
-  moveBy(screen, view.shift(), workers);
+  moveBy(screen, view.shift(), workers_);
   return screen;
 }
 

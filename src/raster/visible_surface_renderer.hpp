@@ -77,12 +77,12 @@ std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
 class PassProjections {
  public:
   PassProjections(const ViewFrame& frame, std::span<const AccumulationPass> passes,
-                  bool backfaceCulling)
-      : frame_(frame), passes_(passes), backfaceCulling_(backfaceCulling) {}
+                  bool backfaceCulling, const Workers& workers)
+      : frame_(frame), passes_(passes), backfaceCulling_(backfaceCulling), workers_(workers) {}
 
   // Pass number `pass`'s projection of the scene tessellated at its instant,
   // the passes asked for in their order.
-  ScreenGeometry of(int pass, const TessellatedScene& tessellated, const Workers& workers);
+  ScreenGeometry of(int pass, const TessellatedScene& tessellated);
 
  private:
   ViewProjection viewOf(int pass) const;
@@ -91,6 +91,7 @@ class PassProjections {
   const ViewFrame& frame_;
   std::span<const AccumulationPass> passes_;
   bool backfaceCulling_;
+  const Workers& workers_;
   ScreenGeometry unshifted_;  // the projection from pass keptFor_'s point of the lens
   int keptFor_ = -1;          // -1: none kept
 };

@@ -54,13 +54,13 @@ TEST(PassProjections, GiveEachPassWhatProjectingForItAloneGives) {
     const TessellatedScene tessellated = tessellateForRaster(scene, settings);
     const ViewFrame frame(scene.camera, settings.width, settings.height);
     const Workers workers(2);
-    PassProjections projections(frame, passes, true);
+    PassProjections projections(frame, passes, true, workers);
     std::vector<ScreenGeometry> given;
     for (int pass = 0; pass < static_cast<int>(passes.size()); ++pass) {
       SCOPED_TRACE("aperture " + std::to_string(aperture) + ", pass " + std::to_string(pass));
       const ViewProjection view(frame, passes[pass].pixelOffset, passes[pass].lens);
       ASSERT_NE(view.shift(), Vec2(0.0f));
-      const ScreenGeometry shared = projections.of(pass, tessellated, workers);
+      const ScreenGeometry shared = projections.of(pass, tessellated);
       expectTheSameToTheBit(shared, projectScene(tessellated, view, true, workers));
       given.push_back(shared);
     }

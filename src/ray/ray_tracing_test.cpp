@@ -8,6 +8,7 @@
 #include "scene/light.hpp"
 #include "scene/shapes/plane.hpp"
 #include "scene/shapes/sphere.hpp"
+#include "support/first_hit_testing.hpp"
 
 namespace rise {
 namespace {
@@ -221,28 +222,7 @@ TEST(WhittedRayTracer, CountsRaysAndTests) {
 // and tests: at every pixel of a scene of mirror, glass, an opaque sphere in
 // a light's way, and two lights.
 TEST(WhittedRayTracer, ShadesAFirstHitInTwoHalvesAsInOne) {
-  Scene scene = emptyScene();
-  scene.image.width = 40;
-  scene.image.height = 30;
-  scene.ambient = Color(0.3f);
-  Material matte;
-  matte.kd = 0.7f;
-  matte.ks = 0.4f;
-  Material mirror = matte;
-  mirror.reflection = 0.6f;
-  Material glass = matte;
-  glass.transmission = 0.7f;
-  glass.color = {0.9f, 0.6f, 1.0f};
-  glass.ior = 1.5f;
-  scene.shapes.push_back(std::make_unique<Plane>(Vec3(0.0f, -1.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f),
-                                                 addMaterial(scene, matte)));
-  scene.shapes.push_back(
-      std::make_unique<Sphere>(Vec3(-0.8f, 0.0f, 0.5f), 0.7f, addMaterial(scene, mirror)));
-  scene.shapes.push_back(
-      std::make_unique<Sphere>(Vec3(0.9f, -0.2f, -0.3f), 0.6f, addMaterial(scene, glass)));
-  scene.shapes.push_back(std::make_unique<Sphere>(Vec3(0.5f, 1.2f, 0.0f), 0.3f, 0));
-  scene.lights.push_back(std::make_unique<PointLight>(Vec3(1.0f, 3.0f, -2.0f), Color(0.8f)));
-  scene.lights.push_back(std::make_unique<PointLight>(Vec3(-3.0f, 1.0f, -1.0f), Color(0.5f)));
+  const Scene scene = first_hit_testing::mirrorGlassAndBlockerScene(40, 30);
   const SceneIntersector intersector(scene, Accel::Bvh, 1);
   const TracingContext context{scene, intersector, 4};
   const ViewFrame view(scene.camera, scene.image.width, scene.image.height);
