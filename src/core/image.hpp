@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cassert>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include "core/color.hpp"
@@ -21,12 +23,46 @@ struct PixelRect {
   }
 };
 
+// Makes the elements of a container without a value where none is given, as
+// `new T` does: memory that is written before it is read need not be filled
+// first, and its pages are then first touched by whoever writes them.
+template <typename T>
+struct LeftUnfilled : std::allocator<T> {
+  template <typename U>
+  struct rebind {
+    using other = LeftUnfilled<U>;
+  };
+  LeftUnfilled() = default;
+  template <typename U>
+  LeftUnfilled(const LeftUnfilled<U>&) {}
+
+  template <typename U, typename... Args>
+  void construct(U* place, Args&&... args) {
+    if constexpr (sizeof...(Args) == 0)
+      ::new (static_cast<void*>(place)) U;
+    else
+      ::new (static_cast<void*>(place)) U(std::forward<Args>(args)...);
+  }
+};
+
+using Pixels = std::vector<Color, LeftUnfilled<Color>>;
+
 // A width x height grid of linear colours, row 0 at the top.
 class Image {
  public:
   Image() = default;
   Image(int width, int height, Color fill = Color(0.0f))
-      : width_(width), height_(height), pixels_(static_cast<std::size_t>(width) * height, fill) {}
+      : width_(width), height_(height), pixels_(pixelCount(width, height), fill) {}
+
+  // An image whose pixels hold no colour until they are written: for one
+  // written whole, in parallel, before anything reads it.
+  static Image unfilled(int width, int height) {
+    Image image;
+    image.width_ = width;
+    image.height_ = height;
+    image.pixels_.resize(pixelCount(width, height));
+    return image;
+  }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -34,9 +70,13 @@ class Image {
   Color& at(int x, int y) { return pixels_[index(x, y)]; }
   const Color& at(int x, int y) const { return pixels_[index(x, y)]; }
 
-  const std::vector<Color>& pixels() const { return pixels_; }
+  const Pixels& pixels() const { return pixels_; }
 
  private:
+  static std::size_t pixelCount(int width, int height) {
+    return static_cast<std::size_t>(width) * height;
+  }
+
   std::size_t index(int x, int y) const {
     assert(x >= 0 && x < width_ && y >= 0 && y < height_);
     return static_cast<std::size_t>(y) * width_ + x;
@@ -44,7 +84,7 @@ class Image {
 
   int width_ = 0;
   int height_ = 0;
-  std::vector<Color> pixels_;
+  Pixels pixels_;
 };
 
 // The pixels of `image` inside `area`, which lies within it.

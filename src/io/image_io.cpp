@@ -80,7 +80,7 @@ float linearFromByte(std::uint8_t byte, Encoding encoding) {
 // Interleaved 8-bit RGB, top row first: the layout of both PNG and PPM.
 std::vector<std::uint8_t> rgbBytes(const Image& image, Encoding encoding) {
   const ByteEncoder& toByte = byteEncoder(encoding);
-  const std::vector<Color>& pixels = image.pixels();
+  const Pixels& pixels = image.pixels();
   std::vector<std::uint8_t> bytes(pixels.size() * 3);
   for (std::size_t i = 0; i < pixels.size(); ++i)
     for (int channel = 0; channel < 3; ++channel)

@@ -150,7 +150,7 @@ TEST_F(ImageIoTest, ExrKeepsLinearFloatsBeyondOne) {
     ASSERT_NE(stored, nullptr) << channel;
     EXPECT_EQ(stored->type, Imf::FLOAT) << channel;
   }
-  std::vector<Color> read(4);
+  Pixels read(4);
   Imf::FrameBuffer frameBuffer;
   char* base = reinterpret_cast<char*>(read.data());
   frameBuffer.insert("R", Imf::Slice(Imf::FLOAT, base, sizeof(Color), 2 * sizeof(Color)));

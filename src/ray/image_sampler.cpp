@@ -1,5 +1,6 @@
 #include "ray/image_sampler.hpp"
 
+#include <optional>
 #include <string>
 
 namespace rise {
@@ -50,6 +51,14 @@ Step tileStep(const TileTrace& tile) {
   return step;
 }
 
+// What a traced tile leaves for the end of the render: its costs and, where
+// a pixel's colour needs the samples of the tiles around it, its own.
+struct TracedTile {
+  TraceCounters counters;
+  std::uint64_t refinedPixels = 0;
+  std::optional<FilmTile> samples;
+};
+
 }  // namespace
 
 RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer,
@@ -66,28 +75,36 @@ RenderResult traceImage(const RenderSettings& settings, RenderObserver& observer
   // The tiles are those of the whole image, and only those whose samples
   // reach the region are traced, so that every pixel of the region adds up
   // the same samples in the same order as in the whole image.
-  std::vector<TileTrace> tiles;
-  for (const PixelRect& area : makeTiles(settings.width, settings.height)) {
-    FilmTile filmTile = film.tileFor(area);
-    if (!filmTile.reach().intersection(settings.area()).isEmpty())
-      tiles.emplace_back(area, std::move(filmTile), result, observer);
-  }
-  Image shown(settings.width, settings.height);
+  std::vector<PixelRect> areas;
+  for (const PixelRect& area : makeTiles(settings.width, settings.height))
+    if (!film.reachOf(area).intersection(settings.area()).isEmpty()) areas.push_back(area);
+  // A tile's samples are made on the worker that traces it, and given back
+  // at once where the film needs no tile's samples but its own: a worker's
+  // next tile then reuses memory it has just touched.
+  std::vector<TracedTile> traced(areas.size());
+  // Every traced tile writes its pixels, and nothing reads the others: the
+  // region is cropped from it.
+  Image shown = Image::unfilled(settings.width, settings.height);
   const Workers workers(settings.threads, observer);
-  workers.forEachTask(static_cast<int>(tiles.size()), [&](int index) {
-    TileTrace& tile = tiles[static_cast<std::size_t>(index)];
+  workers.forEachTask(static_cast<int>(areas.size()), [&](int index) {
+    const PixelRect& area = areas[static_cast<std::size_t>(index)];
+    TileTrace tile(area, film.tileFor(area), result, observer);
     traceTile(tile);
     if (steps) steps->record(tileStep(tile), index);
     tile.film().resolveInto(shown, tile.area());
     observer.onPixelsDone(tile.area(), shown);
+    TracedTile& outcome = traced[static_cast<std::size_t>(index)];
+    outcome.counters = tile.counters;
+    outcome.refinedPixels = tile.refinedPixels;
+    if (!film.tilesAreFinal()) outcome.samples = std::move(tile.film());
   });
   // Nobody wants what a cancelled render made: return at once.
   if (observer.cancelled()) return result;
 
   TraceCounters counters;
   std::uint64_t refinedPixels = 0;
-  for (const TileTrace& tile : tiles) {
-    if (!film.tilesAreFinal()) film.merge(tile.film());
+  for (const TracedTile& tile : traced) {
+    if (tile.samples) film.merge(*tile.samples);
     counters += tile.counters;
     refinedPixels += tile.refinedPixels;
   }

@@ -54,7 +54,7 @@ class TileTrace {
   // Whether the render wants any of them.
   bool recordsBuffers() const { return depth_ || normal_ || cost_; }
 
-  const FilmTile& film() const { return film_; }
+  FilmTile& film() { return film_; }
 
   TraceCounters counters;
   std::uint64_t refinedPixels = 0;  // by adaptive supersampling

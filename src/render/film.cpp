@@ -97,10 +97,15 @@ void Film::makeSums() {
 
 int Film::tileMargin() const { return static_cast<int>(std::ceil(filter_.radius() - 0.5f)); }
 
-FilmTile Film::tileFor(const PixelRect& tile) const {
+PixelRect Film::reachOf(const PixelRect& tile) const {
   const int margin = tileMargin();
-  return FilmTile(filter_, std::max(0, tile.x0 - margin), std::max(0, tile.y0 - margin),
-                  std::min(width_, tile.x1 + margin), std::min(height_, tile.y1 + margin));
+  return {std::max(0, tile.x0 - margin), std::max(0, tile.y0 - margin),
+          std::min(width_, tile.x1 + margin), std::min(height_, tile.y1 + margin)};
+}
+
+FilmTile Film::tileFor(const PixelRect& tile) const {
+  const PixelRect reach = reachOf(tile);
+  return FilmTile(filter_, reach.x0, reach.y0, reach.x1, reach.y1);
 }
 
 void Film::merge(const FilmTile& tile) {

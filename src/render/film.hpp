@@ -52,7 +52,10 @@ class Film {
   // pixel (the box), so no tile needs another's samples.
   bool tilesAreFinal() const { return tileMargin() == 0; }
 
-  // An empty tile covering `tile`'s pixels and the margin its samples reach.
+  // The pixels that the samples taken in `tile` reach: its own and the
+  // filter's margin around them.
+  PixelRect reachOf(const PixelRect& tile) const;
+  // An empty tile covering reachOf(tile).
   FilmTile tileFor(const PixelRect& tile) const;
   // A film takes tiles or images, not both.
   void merge(const FilmTile& tile);
@@ -101,9 +104,6 @@ class FilmTile {
   // weighted average of the samples this tile holds: the final colours when
   // the filter reaches no neighbour (the box), a close preview otherwise.
   void resolveInto(Image& image, const PixelRect& area) const;
-
-  // The pixels its samples reach, margin included.
-  PixelRect reach() const { return {x0_, y0_, x1_, y1_}; }
 
  private:
   friend class Film;
