@@ -2,11 +2,9 @@
 
 #include <algorithm>
 #include <cassert>
-#include <memory>
-#include <utility>
-#include <vector>
 
 #include "core/color.hpp"
+#include "core/left_unfilled.hpp"
 
 namespace rise {
 
@@ -23,29 +21,8 @@ struct PixelRect {
   }
 };
 
-// Makes the elements of a container without a value where none is given, as
-// `new T` does: memory that is written before it is read need not be filled
-// first, and its pages are then first touched by whoever writes them.
-template <typename T>
-struct LeftUnfilled : std::allocator<T> {
-  template <typename U>
-  struct rebind {
-    using other = LeftUnfilled<U>;
-  };
-  LeftUnfilled() = default;
-  template <typename U>
-  LeftUnfilled(const LeftUnfilled<U>&) {}
-
-  template <typename U, typename... Args>
-  void construct(U* place, Args&&... args) {
-    if constexpr (sizeof...(Args) == 0)
-      ::new (static_cast<void*>(place)) U;
-    else
-      ::new (static_cast<void*>(place)) U(std::forward<Args>(args)...);
-  }
-};
-
-using Pixels = std::vector<Color, LeftUnfilled<Color>>;
+// An image's pixels, row after row.
+using Pixels = UnfilledVector<Color>;
 
 // A width x height grid of linear colours, row 0 at the top.
 class Image {

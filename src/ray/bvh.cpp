@@ -49,14 +49,14 @@ void inShares(std::size_t count, int threads, Work&& work) {
   for (std::thread& helper : helpers) helper.join();
 }
 
-std::vector<BuildPrimitive> primitivesOf(const std::vector<const Shape*>& shapes,
-                                         const std::vector<bool>& bounded, int threads) {
+UnfilledVector<BuildPrimitive> primitivesOf(const std::vector<const Shape*>& shapes,
+                                            const std::vector<bool>& bounded, int threads) {
   std::vector<std::size_t> firstOf{0};  // of each shape, among all the primitives
   for (std::size_t shape = 0; shape < shapes.size(); ++shape)
     firstOf.push_back(
         firstOf.back() +
         (bounded[shape] ? static_cast<std::size_t>(shapes[shape]->primitiveCount()) : 0));
-  std::vector<BuildPrimitive> primitives(firstOf.back());
+  UnfilledVector<BuildPrimitive> primitives(firstOf.back());
   inShares(primitives.size(), threads, [&](std::size_t begin, std::size_t end) {
     auto shape = static_cast<std::size_t>(std::upper_bound(firstOf.begin(), firstOf.end(), begin) -
                                           firstOf.begin() - 1);

@@ -35,6 +35,7 @@
 #include <array>
 #include <span>
 
+#include "core/left_unfilled.hpp"
 #include "ray/accelerator.hpp"
 #include "ray/bvh_builder.hpp"
 #include "ray/wide_bvh.hpp"
@@ -110,7 +111,7 @@ class Bvh final : public Accelerator {
   std::vector<const Shape*> shapes_;
   std::vector<int> unbounded_;  // the shapes outside the tree
   std::vector<WideBvhNode> nodes_;
-  std::vector<LeafPrimitive> primitives_;  // in leaf order
+  UnfilledVector<LeafPrimitive> primitives_;  // in leaf order, filled by the workers
 };
 
 }  // namespace rise

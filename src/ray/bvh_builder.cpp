@@ -142,7 +142,7 @@ struct Range {
 
 class Builder {
  public:
-  Builder(std::vector<BuildPrimitive>& primitives, int threads)
+  Builder(UnfilledVector<BuildPrimitive>& primitives, int threads)
       : primitives_(primitives),
         nodes_(std::make_unique_for_overwrite<BvhNode[]>(2 * primitives.size() - 1)),
         spareThreads_(threads - 1) {}
@@ -330,7 +330,7 @@ class Builder {
     return taken;
   }
 
-  std::vector<BuildPrimitive>& primitives_;
+  UnfilledVector<BuildPrimitive>& primitives_;
   std::unique_ptr<BvhNode[]> nodes_;
   std::atomic<std::uint32_t> nodeCount_{1};  // the root
   std::atomic<int> spareThreads_;
@@ -338,7 +338,7 @@ class Builder {
 
 }  // namespace
 
-BuiltBvh buildBvh(std::vector<BuildPrimitive> primitives, int threads) {
+BuiltBvh buildBvh(UnfilledVector<BuildPrimitive> primitives, int threads) {
   if (primitives.empty()) return {};
   return Builder(primitives, std::max(threads, 1)).run();
 }

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/bounds.hpp"
+#include "core/left_unfilled.hpp"
 
 namespace rise {
 
@@ -77,12 +78,12 @@ struct BuiltBvh {
   // when allocated, so that the threads that fill them bring in their pages.
   std::unique_ptr<BvhNode[]> nodeStorage;
   std::size_t nodeCount = 0;
-  std::vector<BuildPrimitive> primitives;  // in leaf order: a leaf's are contiguous
+  UnfilledVector<BuildPrimitive> primitives;  // in leaf order: a leaf's are contiguous
 
   std::span<const BvhNode> nodes() const { return {nodeStorage.get(), nodeCount}; }
 };
 
 // Builds the hierarchy on up to `threads` threads.
-BuiltBvh buildBvh(std::vector<BuildPrimitive> primitives, int threads);
+BuiltBvh buildBvh(UnfilledVector<BuildPrimitive> primitives, int threads);
 
 }  // namespace rise
