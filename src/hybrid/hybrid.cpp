@@ -104,18 +104,17 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// An image of the size and, all of zeros, the buffers the settings want: the
-// "cost" buffer and, with `whatWasHit`, those of what the primary rays hit,
-// which the accumulation keeps of its first pass alone
-// (visible_surface_renderer.hpp).
+// An image of the size and the buffers the settings want: the "cost" buffer
+// and, with `whatWasHit`, those of what the primary rays hit, which the
+// accumulation keeps of its first pass alone (visible_surface_renderer.hpp).
+// All are left unfilled: pass 2 writes every pixel of each, on the workers.
 RenderResult blankResult(const RenderSettings& settings, bool whatWasHit) {
-  RenderResult result{Image(settings.width, settings.height), {}, {}};
-  if (settings.wantsBuffer("cost"))
-    result.buffers.emplace("cost", Image(settings.width, settings.height));
+  const auto unfilled = [&] { return Image::unfilled(settings.width, settings.height); };
+  RenderResult result{unfilled(), {}, {}};
+  if (settings.wantsBuffer("cost")) result.buffers.emplace("cost", unfilled());
   if (whatWasHit)
     for (const char* name : {"depth", "normal", "face"})
-      if (settings.wantsBuffer(name))
-        result.buffers.emplace(name, Image(settings.width, settings.height));
+      if (settings.wantsBuffer(name)) result.buffers.emplace(name, unfilled());
   return result;
 }
 
