@@ -63,7 +63,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
-#include <memory>
 #include <optional>
 #include <set>
 #include <span>
@@ -71,6 +70,7 @@
 #include <tuple>
 #include <vector>
 
+#include "core/left_unfilled.hpp"
 #include "hybrid/hybrid_counters.hpp"
 #include "hybrid/item_buffer.hpp"
 #include "raster/bands.hpp"
@@ -149,23 +149,10 @@ struct Pixel {
   }
 };
 
-// Room for the records of every pixel of a pass, left unfilled: the first
-// sweep of pass 2 writes each, on the workers, so that the memory is first
-// touched on all of them and not on one (a record holds nothing to destroy,
-// and bytes may hold it: Pixel is an aggregate).
-class PixelRecords {
- public:
-  void makeRoomFor(std::size_t count) {
-    if (count == count_) return;
-    bytes_ = std::make_unique_for_overwrite<std::byte[]>(count * sizeof(Pixel));
-    count_ = count;
-  }
-  Pixel& operator[](std::size_t i) const { return reinterpret_cast<Pixel*>(bytes_.get())[i]; }
-
- private:
-  std::unique_ptr<std::byte[]> bytes_;
-  std::size_t count_ = 0;
-};
+// The records of every pixel of a pass, left unfilled: the first sweep of
+// pass 2 writes each, on the workers, so that the memory is first touched on
+// all of them and not on one.
+using PixelRecords = UnfilledVector<Pixel>;
 
 // The pass's image and buffers, filled pixel by pixel.
 struct Images {
@@ -188,7 +175,7 @@ struct GroupPass {
   GroupPass(const AccumulationPass& pass, const PassRecording& recording, PixelRecords& pixels,
             const RenderSettings& settings)
       : pass(pass), recording(recording), pixels(pixels), images(settings, recording.index == 0) {
-    pixels.makeRoomFor(static_cast<std::size_t>(settings.width) * settings.height);
+    pixels.resize(static_cast<std::size_t>(settings.width) * settings.height);
   }
 
   const AccumulationPass& pass;

@@ -215,11 +215,16 @@ ScreenGeometry PassProjections::of(int pass, const TessellatedScene& tessellated
   const ViewProjection view = viewOf(pass);
   if (keptFor_ < 0 || !seeFromTheSamePoint(keptFor_, pass))
     unshifted_ = projectUnshifted(tessellated, view, backfaceCulling_, workers_);
-  keptFor_ = pass;
-  const bool nextShares =
-      pass + 1 < static_cast<int>(passes_.size()) && seeFromTheSamePoint(pass, pass + 1);
-  ScreenGeometry screen = nextShares ? unshifted_ : std::move(unshifted_);
-  if (!nextShares) keptFor_ = -1;
+  // Kept for the next pass where it shares the point of the lens, else
+  // handed over.
+  ScreenGeometry screen;
+  if (pass + 1 < static_cast<int>(passes_.size()) && seeFromTheSamePoint(pass, pass + 1)) {
+    screen = unshifted_;
+    keptFor_ = pass;
+  } else {
+    screen = std::move(unshifted_);
+    keptFor_ = -1;
+  }
   moveBy(screen, view.shift(), workers_);
   return screen;
 }
