@@ -50,14 +50,18 @@ render_once() {
 
 # Whitted's and the hybrid's renders of a row ($1 names it, the rest are
 # rise's arguments), taking turns run by run, so that the load of a shared
-# machine falls on both alike.
+# machine falls on both alike; the one that goes first changes from run to
+# run, so that each follows itself as often as the other. (A process's
+# fresh memory can cost more after one that used less: the host backs the
+# difference anew.)
 render_pair() {
-  local name="$1" run
+  local name="$1" run algorithm
+  local -a order=(ray-tracing hybrid)
   shift
   rm -f "$out/$name-ray-tracing.json" "$out/$name-hybrid.json"
   for ((run = 1; run <= runs; ++run)); do
-    render_once "$name-ray-tracing" "$@" -a ray-tracing
-    render_once "$name-hybrid" "$@" -a hybrid
+    for algorithm in "${order[@]}"; do render_once "$name-$algorithm" "$@" -a "$algorithm"; done
+    order=("${order[1]}" "${order[0]}")
   done
 }
 

@@ -46,10 +46,11 @@
 // each pass does both passes above at its own offset in the pixel, point of
 // the lens and instant of the shutter interval. The accumulation passes are
 // taken a few at a time: pass 1 for each, then pass 2 for all of them, a
-// pixel's samples shaded one after another and their shadow rays in the same
-// packets. A pixel's samples are nearly the same rays: the later ones find
-// in the cache the boxes of the structure and the surface the first one
-// fetched, as the samples of Whitted's pixel, traced one after another, do.
+// pixel's samples found and shaded one after another, their shadow rays in
+// the same packets. A pixel's samples are nearly the same rays: the later
+// ones find in the cache the boxes of the structure and the surface the
+// first one fetched, as the samples of Whitted's pixel, traced one after
+// another, do.
 //
 // Its steps, for a student: the item buffer filling, a scanline a step, the
 // items in their materials' colours; then each band of pixels shaded, with
@@ -196,8 +197,8 @@ struct GroupCounters {
   }
 };
 
-// Both passes of a group of accumulation passes: pass 1, and the first sweep
-// of pass 2, pass after pass; then the shading of them all, a pixel's
+// Both passes of a group of accumulation passes: pass 1 for each, then pass
+// 2 for them all, its first sweep and its shading each taking a pixel's
 // samples one after another.
 class HybridGroup {
  public:
@@ -221,7 +222,7 @@ class HybridGroup {
   }
 
   std::vector<RenderResult> run(HybridCounters& counters) {
-    for (GroupPass& pass : passes_) findHits(pass, counters);
+    findHits(counters);
     const auto start = std::chrono::steady_clock::now();
     const GroupCounters shaded = inBands<GroupCounters>(
         [&](int y, int x0, int x1, GroupCounters& band) { shadeRow(y, x0, x1, band); },
@@ -253,16 +254,26 @@ class HybridGroup {
     int x, y;
     Item item;
   };
-  // What a band of the first sweep of pass 2 found, its seeds in order.
-  struct BandWork {
+  // What the first sweep of pass 2 found in a pass, its seeds in order.
+  struct PassWork {
     HybridCounters counters;
     std::vector<Seed> seeds;
     std::uint64_t coveredPixels = 0;  // those where the item buffer shows an object
 
-    BandWork& operator+=(const BandWork& other) {
+    PassWork& operator+=(const PassWork& other) {
       counters += other.counters;
       coveredPixels += other.coveredPixels;
       seeds.insert(seeds.end(), other.seeds.begin(), other.seeds.end());
+      return *this;
+    }
+  };
+  // What it found in each pass of the group.
+  struct SweepWork {
+    std::vector<PassWork> passes;
+
+    SweepWork& operator+=(const SweepWork& other) {
+      passes.resize(std::max(passes.size(), other.passes.size()));
+      for (std::size_t i = 0; i < other.passes.size(); ++i) passes[i] += other.passes[i];
       return *this;
     }
   };
@@ -306,30 +317,40 @@ class HybridGroup {
     return ray;
   }
 
-  // Pass 1, the item buffer, and the first sweep of pass 2, the pixels' hits
-  // on their items and the outlines followed.
-  void findHits(GroupPass& pass, HybridCounters& counters) {
-    Stats stats;
+  // Pass 1, an item buffer for each pass, and the first sweep of pass 2 over
+  // them all, a pixel's samples one after another: they find in the cache
+  // the surfaces the first one fetched. Then the outlines are followed.
+  void findHits(HybridCounters& counters) {
+    std::vector<Stats> stats(passes_.size());
+    std::deque<ItemBuffer> items;
     auto start = std::chrono::steady_clock::now();
-    const ItemBuffer items(context_.scene, tessellated_,
-                           projections_.of(pass.recording.index, tessellated_), settings_.width,
-                           settings_.height, workers_, pass.recording.steps, stats);
+    for (std::size_t i = 0; i < passes_.size(); ++i) {
+      const GroupPass& pass = passes_[i];
+      items.emplace_back(context_.scene, tessellated_,
+                         projections_.of(pass.recording.index, tessellated_), settings_.width,
+                         settings_.height, workers_, pass.recording.steps, stats[i]);
+    }
     counters.itemBufferSeconds += secondsSince(start);
 
     start = std::chrono::steady_clock::now();
-    BandWork found = inBands<BandWork>(
-        [&](int y, int x0, int x1, BandWork& band) {
-          for (int x = x0; x < x1; ++x) findHit(pass, items, x, y, band);
+    SweepWork found = inBands<SweepWork>(
+        [&](int y, int x0, int x1, SweepWork& band) {
+          band.passes.resize(passes_.size());
+          for (int x = x0; x < x1; ++x)
+            for (std::size_t i = 0; i < passes_.size(); ++i)
+              findHit(passes_[i], items[i], x, y, band.passes[i]);
         },
-        [](const PixelRect&, int, const BandWork&) {});
-    counters += found.counters;
-    // A cancelled sweep left pixels unwritten, which neither the outlines
-    // nor the shading (whose workers take no task then) may read.
-    if (!workers_.cancelled()) followOutlines(pass, std::move(found.seeds), counters);
+        [](const PixelRect&, int, const SweepWork&) {});
+    for (std::size_t i = 0; i < passes_.size(); ++i) {
+      PassWork& work = found.passes[i];
+      counters += work.counters;
+      // A cancelled sweep left pixels unwritten, which neither the outlines
+      // nor the shading (whose workers take no task then) may read.
+      if (!workers_.cancelled()) followOutlines(passes_[i], std::move(work.seeds), counters);
+      stats[i].add("covered_pixels", static_cast<double>(work.coveredPixels));
+      passes_[i].images.result.stats = std::move(stats[i]);
+    }
     counters.raySeconds += secondsSince(start);
-
-    stats.add("covered_pixels", static_cast<double>(found.coveredPixels));
-    pass.images.result.stats = std::move(stats);
   }
 
   // The nearest hit of the pixel's ray on the item's exact surface alone.
@@ -361,17 +382,17 @@ class HybridGroup {
   // Pass 2 begins: the pixel's ray against its own item's exact surface, then
   // against each other item seen beside it; those that cover it nearer are
   // the seeds of followOutlines.
-  void findHit(GroupPass& pass, const ItemBuffer& items, int x, int y, BandWork& band) {
+  void findHit(GroupPass& pass, const ItemBuffer& items, int x, int y, PassWork& work) {
     Pixel& pixel = at(pass, x, y);
     const int face = items.faceAt(x, y);
     const Ray ray = rayAt(pass, x, y);
     pixel = Pixel{};  // its first write in the render, or what the last group left goes
     pixel.item = items.itemOf(face);
-    band.coveredPixels += pixel.item.shape >= 0 ? 1 : 0;
+    work.coveredPixels += pixel.item.shape >= 0 ? 1 : 0;
     if (pass.images.face)
-      pass.images.face->at(x, y) = Color(static_cast<float>(items.sceneFaceAt(x, y)));
+      pass.images.face->at(x, y) = Color(static_cast<float>(items.faceAt(x, y)));
     Hit hit;
-    if (pixel.item.shape >= 0 && !intersect(pixel.item, ray, pixel, hit, band.counters))
+    if (pixel.item.shape >= 0 && !intersect(pixel.item, ray, pixel, hit, work.counters))
       pixel.verdict = Verdict::Outside;
     pixel.keep(hit);
     std::array<Item, 4> tested;
@@ -383,9 +404,9 @@ class HybridGroup {
       const auto end = tested.begin() + count;
       if (item == pixel.item || std::find(tested.begin(), end, item) != end) return;
       tested[static_cast<std::size_t>(count++)] = item;
-      if (!coversNearer(item, ray, pixel, band.counters)) return;
+      if (!coversNearer(item, ray, pixel, work.counters)) return;
       fallBack(pixel);
-      band.seeds.push_back({x, y, item});
+      work.seeds.push_back({x, y, item});
     });
   }
 

@@ -32,25 +32,22 @@ class ItemBuffer {
   // counters to `stats`. Each scanline is a step for `steps` (when not
   // null): the scanline's own step, its items drawn in their materials'
   // colours.
-  ItemBuffer(const Scene& scene, const TessellatedScene& tessellated, ScreenGeometry screen,
+  ItemBuffer(const Scene& scene, const TessellatedScene& tessellated, const ScreenGeometry& screen,
              int width, int height, const Workers& workers, StepRecorder* steps, Stats& stats);
 
-  Item itemAt(int x, int y) const { return itemOf(faces_.at(x, y)); }
-  // The screen face seen at the pixel, -1 for none, and the item it lies on.
+  Item itemAt(int x, int y) const { return itemOf(faceAt(x, y)); }
+  // The scene's number of the face seen at the pixel, as the "face" buffer
+  // has it, -1 for none, and the item it lies on.
   int faceAt(int x, int y) const { return faces_.at(x, y); }
   Item itemOf(int face) const;
-  // The scene's number of the face seen at the pixel, as the "face" buffer
-  // has it, -1 for none.
-  int sceneFaceAt(int x, int y) const;
 
  private:
   void recordFilling(const std::vector<Step>& scanlines, StepRecorder& steps) const;
 
   const Scene& scene_;
   const TessellatedScene& tessellated_;
-  ScreenGeometry screen_;
   std::unique_ptr<StepRecorder> sweepSteps_;  // the sweep's own steps, when recorded
-  FaceBuffer faces_;
+  FaceBuffer faces_;                          // the scene's faces, once the sweep is done
 };
 
 }  // namespace rise
