@@ -58,26 +58,35 @@ void addFaces(const Scene& scene, int shape, const Tessellation& part, const Vec
 
 }  // namespace
 
+// Every shape is cut into triangles before any is gathered, so that the
+// scene's arrays are made once, at their full size: growing them shape by
+// shape would copy a large mesh's faces again for each shape after it.
 TessellatedScene tessellateScene(const Scene& scene, const TessellationSettings& settings,
                                  const Workers& workers) {
-  TessellatedScene tessellated;
+  std::vector<Tessellation> parts(scene.shapes.size());
+  std::size_t vertexCount = 0, faceCount = 0;
   for (std::size_t shape = 0; shape < scene.shapes.size(); ++shape) {
-    Tessellation part;
-    scene.shapes[shape]->tessellate(settings, part);
+    scene.shapes[shape]->tessellate(settings, parts[shape]);
+    vertexCount += parts[shape].vertices.size();
+    faceCount += parts[shape].triangles.size();
+  }
+  TessellatedScene tessellated;
+  tessellated.vertices.reserve(vertexCount);
+  tessellated.faces.resize(faceCount);
+  std::size_t firstFace = 0;
+  for (std::size_t shape = 0; shape < parts.size(); ++shape) {
+    Tessellation& part = parts[shape];
     tessellated.projections.push_back(
         part.projection ? std::optional<PlacedProjection>(std::in_place, *part.projection,
                                                           part.projectionPlacement)
                         : std::nullopt);
     const int firstVertex = static_cast<int>(tessellated.vertices.size());
-    if (tessellated.vertices.empty())
-      tessellated.vertices = std::move(part.vertices);
-    else
-      tessellated.vertices.insert(tessellated.vertices.end(), part.vertices.begin(),
-                                  part.vertices.end());
-    const std::size_t firstFace = tessellated.faces.size();
-    tessellated.faces.resize(firstFace + part.triangles.size());
+    tessellated.vertices.insert(tessellated.vertices.end(), part.vertices.begin(),
+                                part.vertices.end());
     addFaces(scene, static_cast<int>(shape), part, settings.viewpoint, firstVertex, firstFace,
              workers, tessellated);
+    firstFace += part.triangles.size();
+    part = Tessellation();  // its triangles are the scene's now
   }
   return tessellated;
 }
