@@ -86,7 +86,7 @@ for row in "${SCENES[@]}"; do
     render_pair "$name-$samples" "$scene" "${sampling[@]}"
     w="$out/$name-$samples-ray-tracing.json" h="$out/$name-$samples-hybrid.json"
     whitted="$(json_value "$w" render_seconds 4)" hybrid="$(json_value "$h" render_seconds 4)"
-    lines+=("$(printf '| %-26s | %7s | %11s | %10s | %6s | %7s | %9s | %9s | %8s |' "$label" \
+    lines+=("$(printf '| %-26s | %7s | %11s | %10s | %6s | %7s | %9s | %10s | %10s |' "$label" \
       "$samples" "$whitted" "$hybrid" "$(ratio "$whitted" "$hybrid")" \
       "$(share "$(json_value "$w" primary_rays 0)" "$(json_value "$w" rays 0)")" \
       "$(json_value "$h" fallback_pixels 0)" "$(json_value "$h" item_buffer_seconds 3)" \
@@ -96,8 +96,8 @@ for row in "${SCENES[@]}"; do
 done
 
 echo
-printf '| %-26s | %7s | %11s | %10s | %6s | %7s | %9s | %9s | %8s |\n' "scene" "samples" \
+printf '| %-26s | %7s | %11s | %10s | %6s | %7s | %9s | %10s | %10s |\n' "scene" "samples" \
   "Whitted (s)" "hybrid (s)" "W / h" "primary" "fallbacks" "pass 1 (s)" "pass 2 (s)"
 printf '|%s|%s|%s|%s|%s|%s|%s|%s|%s|\n' "----------------------------" "---------" \
-  "-------------" "------------" "--------" "---------" "-----------" "-----------" "----------"
+  "-------------" "------------" "--------" "---------" "-----------" "------------" "------------"
 printf '%s\n' "${lines[@]}"
