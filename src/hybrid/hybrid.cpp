@@ -317,13 +317,10 @@ class HybridGroup {
     return ray;
   }
 
-  // Pass 1, an item buffer for each pass, and the first sweep of pass 2 over
-  // them all, a pixel's samples one after another: they find in the cache
-  // the surfaces the first one fetched. Then the outlines are followed.
-  void findHits(HybridCounters& counters) {
-    std::vector<Stats> stats(passes_.size());
+  // Pass 1: an item buffer for each pass, its counters into `stats`.
+  std::deque<ItemBuffer> fillItemBuffers(std::vector<Stats>& stats, HybridCounters& counters) {
+    const auto start = std::chrono::steady_clock::now();
     std::deque<ItemBuffer> items;
-    auto start = std::chrono::steady_clock::now();
     for (std::size_t i = 0; i < passes_.size(); ++i) {
       const GroupPass& pass = passes_[i];
       items.emplace_back(context_.scene, tessellated_,
@@ -331,8 +328,16 @@ class HybridGroup {
                          settings_.height, workers_, pass.recording.steps, stats[i]);
     }
     counters.itemBufferSeconds += secondsSince(start);
+    return items;
+  }
 
-    start = std::chrono::steady_clock::now();
+  // Pass 1, and the first sweep of pass 2 over all the passes, a pixel's
+  // samples one after another: they find in the cache the surfaces the first
+  // one fetched. Then the outlines are followed.
+  void findHits(HybridCounters& counters) {
+    std::vector<Stats> stats(passes_.size());
+    const std::deque<ItemBuffer> items = fillItemBuffers(stats, counters);
+    const auto start = std::chrono::steady_clock::now();
     SweepWork found = inBands<SweepWork>(
         [&](int y, int x0, int x1, SweepWork& band) {
           band.passes.resize(passes_.size());
@@ -389,8 +394,7 @@ class HybridGroup {
     pixel = Pixel{};  // its first write in the render, or what the last group left goes
     pixel.item = items.itemOf(face);
     work.coveredPixels += pixel.item.shape >= 0 ? 1 : 0;
-    if (pass.images.face)
-      pass.images.face->at(x, y) = Color(static_cast<float>(items.faceAt(x, y)));
+    if (pass.images.face) pass.images.face->at(x, y) = Color(static_cast<float>(face));
     Hit hit;
     if (pixel.item.shape >= 0 && !intersect(pixel.item, ray, pixel, hit, work.counters))
       pixel.verdict = Verdict::Outside;
