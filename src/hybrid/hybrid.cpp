@@ -128,15 +128,15 @@ struct PassRecording {
 };
 
 // What pass 2 knows of a pixel, from its first sweep to its shading, kept
-// small: a group holds it for every pixel of each of its passes.
+// small: a group holds it for every pixel of each of its passes. Its item is
+// the item buffer's, and the intersection tests made for it go straight to
+// the "cost" buffer.
 struct Pixel {
-  Item item;
   // The primary ray's hit on its item's exact surface (Hit, but the shape,
   // which is the item's).
   float t = kInfinity;
   int primitive = 0;
   Vec2 barycentric{0.0f};
-  std::uint32_t tests = 0;  // intersection tests made for it, for the "cost" buffer
   Verdict verdict = Verdict::FromItemBuffer;
   bool mirrorOrGlass = false;  // its shading spawned reflected or refracted rays
 
@@ -145,9 +145,7 @@ struct Pixel {
     primitive = hit.primitive;
     barycentric = hit.barycentric;
   }
-  Hit hit(const Scene& scene) const {
-    return {t, scene.shapes[static_cast<std::size_t>(item.shape)].get(), primitive, barycentric};
-  }
+  Hit hitOn(const Shape* shape) const { return {t, shape, primitive, barycentric}; }
 };
 
 // The records of every pixel of a pass, left unfilled: the first sweep of
@@ -183,6 +181,7 @@ struct GroupPass {
   const PassRecording recording;
   PixelRecords& pixels;  // the render's, kept from group to group
   Images images;
+  const ItemBuffer* items = nullptr;  // once pass 1 has filled it
 };
 
 // The counters of a group's shading: its first pass's apart, for that
@@ -318,17 +317,15 @@ class HybridGroup {
   }
 
   // Pass 1: an item buffer for each pass, its counters into `stats`.
-  std::deque<ItemBuffer> fillItemBuffers(std::vector<Stats>& stats, HybridCounters& counters) {
+  void fillItemBuffers(std::vector<Stats>& stats, HybridCounters& counters) {
     const auto start = std::chrono::steady_clock::now();
-    std::deque<ItemBuffer> items;
     for (std::size_t i = 0; i < passes_.size(); ++i) {
-      const GroupPass& pass = passes_[i];
-      items.emplace_back(context_.scene, tessellated_,
-                         projections_.of(pass.recording.index, tessellated_), settings_.width,
-                         settings_.height, workers_, pass.recording.steps, stats[i]);
+      GroupPass& pass = passes_[i];
+      pass.items = &itemBuffers_.emplace_back(
+          context_.scene, tessellated_, projections_.of(pass.recording.index, tessellated_),
+          settings_.width, settings_.height, workers_, pass.recording.steps, stats[i]);
     }
     counters.itemBufferSeconds += secondsSince(start);
-    return items;
   }
 
   // Pass 1, and the first sweep of pass 2 over all the passes, a pixel's
@@ -336,14 +333,14 @@ class HybridGroup {
   // one fetched. Then the outlines are followed.
   void findHits(HybridCounters& counters) {
     std::vector<Stats> stats(passes_.size());
-    const std::deque<ItemBuffer> items = fillItemBuffers(stats, counters);
+    fillItemBuffers(stats, counters);
     const auto start = std::chrono::steady_clock::now();
     SweepWork found = inBands<SweepWork>(
         [&](int y, int x0, int x1, SweepWork& band) {
           band.passes.resize(passes_.size());
           for (int x = x0; x < x1; ++x)
             for (std::size_t i = 0; i < passes_.size(); ++i)
-              findHit(passes_[i], items[i], x, y, band.passes[i]);
+              findHit(passes_[i], x, y, band.passes[i]);
         },
         [](const PixelRect&, int, const SweepWork&) {});
     for (std::size_t i = 0; i < passes_.size(); ++i) {
@@ -358,26 +355,41 @@ class HybridGroup {
     counters.raySeconds += secondsSince(start);
   }
 
+  const Shape* shapeOf(const Item& item) const {
+    return context_.scene.shapes[static_cast<std::size_t>(item.shape)].get();
+  }
+
+  // The pixel's first hit, on its item.
+  Hit hitAt(const GroupPass& pass, int x, int y) const {
+    return at(pass, x, y).hitOn(shapeOf(pass.items->itemAt(x, y)));
+  }
+
+  // Intersection tests made for the pixel, into its "cost" where wanted.
+  void addCost(GroupPass& pass, int x, int y, std::uint64_t tests) const {
+    if (pass.images.cost) pass.images.cost->at(x, y) += Color(static_cast<float>(tests));
+  }
+
   // The nearest hit of the pixel's ray on the item's exact surface alone.
-  bool intersect(const Item& item, const Ray& ray, Pixel& pixel, Hit& hit,
+  bool intersect(const Item& item, GroupPass& pass, int x, int y, const Ray& ray, Hit& hit,
                  HybridCounters& counters) {
     const std::uint64_t before = counters.traced.intersections.tests;
-    const bool found =
-        context_.scene.shapes[static_cast<std::size_t>(item.shape)]->intersectPrimitive(
-            item.primitive, ray, 0.0f, hit, counters.traced.intersections);
+    const bool found = shapeOf(item)->intersectPrimitive(item.primitive, ray, 0.0f, hit,
+                                                         counters.traced.intersections);
     const std::uint64_t tests = counters.traced.intersections.tests - before;
     counters.counts[kItemTests] += tests;
-    pixel.tests += static_cast<std::uint32_t>(tests);
+    addCost(pass, x, y, tests);
     return found;
   }
 
   // Whether `item` meets the pixel's ray before the pixel's own item does
   // (at the same distance, the one the structures would pick: the first in
   // the scene's order).
-  bool coversNearer(const Item& item, const Ray& ray, Pixel& pixel, HybridCounters& counters) {
+  bool coversNearer(const Item& item, GroupPass& pass, int x, int y, const Ray& ray,
+                    HybridCounters& counters) {
     Hit hit;
-    return intersect(item, ray, pixel, hit, counters) &&
-           std::tie(hit.t, item) < std::tie(pixel.t, pixel.item);
+    if (!intersect(item, pass, x, y, ray, hit, counters)) return false;
+    const Item own = pass.items->itemAt(x, y);
+    return std::tie(hit.t, item) < std::tie(at(pass, x, y).t, own);
   }
 
   void fallBack(Pixel& pixel) {
@@ -387,16 +399,18 @@ class HybridGroup {
   // Pass 2 begins: the pixel's ray against its own item's exact surface, then
   // against each other item seen beside it; those that cover it nearer are
   // the seeds of followOutlines.
-  void findHit(GroupPass& pass, const ItemBuffer& items, int x, int y, PassWork& work) {
+  void findHit(GroupPass& pass, int x, int y, PassWork& work) {
+    const ItemBuffer& items = *pass.items;
     Pixel& pixel = at(pass, x, y);
     const int face = items.faceAt(x, y);
+    const Item own = items.itemOf(face);
     const Ray ray = rayAt(pass, x, y);
     pixel = Pixel{};  // its first write in the render, or what the last group left goes
-    pixel.item = items.itemOf(face);
-    work.coveredPixels += pixel.item.shape >= 0 ? 1 : 0;
+    work.coveredPixels += own.shape >= 0 ? 1 : 0;
     if (pass.images.face) pass.images.face->at(x, y) = Color(static_cast<float>(face));
+    if (pass.images.cost) pass.images.cost->at(x, y) = Color(0.0f);
     Hit hit;
-    if (pixel.item.shape >= 0 && !intersect(pixel.item, ray, pixel, hit, work.counters))
+    if (own.shape >= 0 && !intersect(own, pass, x, y, ray, hit, work.counters))
       pixel.verdict = Verdict::Outside;
     pixel.keep(hit);
     std::array<Item, 4> tested;
@@ -406,9 +420,9 @@ class HybridGroup {
       if (besideFace == face || besideFace < 0) return;
       const Item item = items.itemOf(besideFace);
       const auto end = tested.begin() + count;
-      if (item == pixel.item || std::find(tested.begin(), end, item) != end) return;
+      if (item == own || std::find(tested.begin(), end, item) != end) return;
       tested[static_cast<std::size_t>(count++)] = item;
-      if (!coversNearer(item, ray, pixel, work.counters)) return;
+      if (!coversNearer(item, pass, x, y, ray, work.counters)) return;
       fallBack(pixel);
       work.seeds.push_back({x, y, item});
     });
@@ -425,10 +439,10 @@ class HybridGroup {
       const Seed seed = pending.front();
       pending.pop_front();
       forEachNeighbour(seed.x, seed.y, [&](int x, int y) {
-        Pixel& pixel = at(pass, x, y);
-        if (pixel.item == seed.item || !tested.insert({x, y, seed.item}).second) return;
-        if (!coversNearer(seed.item, rayAt(pass, x, y), pixel, counters)) return;
-        fallBack(pixel);
+        if (pass.items->itemAt(x, y) == seed.item || !tested.insert({x, y, seed.item}).second)
+          return;
+        if (!coversNearer(seed.item, pass, x, y, rayAt(pass, x, y), counters)) return;
+        fallBack(at(pass, x, y));
         pending.push_back({x, y, seed.item});
       });
     }
@@ -464,8 +478,7 @@ class HybridGroup {
           }
           ++passCounters.counts[kFromItemBuffer];
           batched.push_back({&pass, x});
-          batch.add(rayAt(pass, x, y), at(pass, x, y).hit(context_.scene), whitted,
-                    passCounters.traced);
+          batch.add(rayAt(pass, x, y), hitAt(pass, x, y), whitted, passCounters.traced);
         }
       }
       batch.traceShadowRays();
@@ -475,7 +488,7 @@ class HybridGroup {
         HybridCounters& passCounters = countersOf(pass);
         const IntersectionCounters shadowRayCosts = batch.shadowRayCosts(i);
         passCounters.traced.intersections += shadowRayCosts;
-        at(pass, x, y).tests += static_cast<std::uint32_t>(shadowRayCosts.tests);
+        addCost(pass, x, y, shadowRayCosts.tests);
         const RaysSoFar before(passCounters.traced);
         const SampleResult sample = batch.finish(i, whitted, passCounters.traced);
         record(pass, x, y, sample, batch.sentShadowRays(i), before, passCounters);
@@ -485,7 +498,7 @@ class HybridGroup {
 
   bool shadedInBatch(const GroupPass& pass, int x, int y) const {
     const Pixel& pixel = at(pass, x, y);
-    return pixel.verdict == Verdict::FromItemBuffer && pixel.item.shape >= 0 &&
+    return pixel.verdict == Verdict::FromItemBuffer && pass.items->itemAt(x, y).shape >= 0 &&
            !(pass.recording.trees && pass.recording.trees->wantsTreeOf({x, y}));
   }
 
@@ -523,8 +536,8 @@ class HybridGroup {
       sample = tracePrimary(context_, ray, whitted, traced, treeHere);
     } else {
       ++counters.counts[kFromItemBuffer];
-      const bool seen = pixel.item.shape >= 0;
-      const Hit hit = seen ? pixel.hit(context_.scene) : Hit{};
+      const bool seen = pass.items->itemAt(x, y).shape >= 0;
+      const Hit hit = seen ? hitAt(pass, x, y) : Hit{};
       sample = shadeFirstHit(context_, ray, seen ? &hit : nullptr, whitted, traced, treeHere);
     }
     if (tree) pass.recording.trees->recordTree(std::move(*tree));
@@ -540,11 +553,10 @@ class HybridGroup {
     pixel.mirrorOrGlass = traced.reflectionRays + traced.refractionRays > before.mirrorOrGlass;
     counters.counts[kSpawning] += spawnedShadowRays || pixel.mirrorOrGlass;
     counters.counts[kMirrorOrGlass] += pixel.mirrorOrGlass;
-    pixel.tests += static_cast<std::uint32_t>(traced.intersections.tests - before.tests);
+    addCost(pass, x, y, traced.intersections.tests - before.tests);
 
     Images& images = pass.images;
     images.image.at(x, y) = sample.color;
-    if (images.cost) images.cost->at(x, y) = Color(static_cast<float>(pixel.tests));
     if (images.depth) images.depth->at(x, y) = Color(sample.depth);
     if (images.normal) images.normal->at(x, y) = sample.normal;
   }
@@ -556,7 +568,8 @@ class HybridGroup {
   RenderObserver& observer_;
   const Workers workers_;
   const ViewFrame view_;
-  std::deque<GroupPass> passes_;  // a deque: a pass's images point into the pass
+  std::deque<GroupPass> passes_;        // a deque: a pass's images point into the pass
+  std::deque<ItemBuffer> itemBuffers_;  // a pass's, which it points to
 };
 
 // Four passes in a group: a packet of eight shadow rays then leaves from two
