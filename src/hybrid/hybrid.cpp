@@ -277,6 +277,7 @@ class HybridGroup {
     }
   };
 
+  Item itemAt(const GroupPass& pass, int x, int y) const { return pass.items->itemAt(x, y); }
   Pixel& at(GroupPass& pass, int x, int y) const {
     return pass.pixels[static_cast<std::size_t>(y) * settings_.width + x];
   }
@@ -361,7 +362,7 @@ class HybridGroup {
 
   // The pixel's first hit, on its item.
   Hit hitAt(const GroupPass& pass, int x, int y) const {
-    return at(pass, x, y).hitOn(shapeOf(pass.items->itemAt(x, y)));
+    return at(pass, x, y).hitOn(shapeOf(itemAt(pass, x, y)));
   }
 
   // Intersection tests made for the pixel, into its "cost" where wanted.
@@ -388,7 +389,7 @@ class HybridGroup {
                     HybridCounters& counters) {
     Hit hit;
     if (!intersect(item, pass, x, y, ray, hit, counters)) return false;
-    const Item own = pass.items->itemAt(x, y);
+    const Item own = itemAt(pass, x, y);
     return std::tie(hit.t, item) < std::tie(at(pass, x, y).t, own);
   }
 
@@ -439,8 +440,7 @@ class HybridGroup {
       const Seed seed = pending.front();
       pending.pop_front();
       forEachNeighbour(seed.x, seed.y, [&](int x, int y) {
-        if (pass.items->itemAt(x, y) == seed.item || !tested.insert({x, y, seed.item}).second)
-          return;
+        if (itemAt(pass, x, y) == seed.item || !tested.insert({x, y, seed.item}).second) return;
         if (!coversNearer(seed.item, pass, x, y, rayAt(pass, x, y), counters)) return;
         fallBack(at(pass, x, y));
         pending.push_back({x, y, seed.item});
@@ -498,7 +498,7 @@ class HybridGroup {
 
   bool shadedInBatch(const GroupPass& pass, int x, int y) const {
     const Pixel& pixel = at(pass, x, y);
-    return pixel.verdict == Verdict::FromItemBuffer && pass.items->itemAt(x, y).shape >= 0 &&
+    return pixel.verdict == Verdict::FromItemBuffer && itemAt(pass, x, y).shape >= 0 &&
            !(pass.recording.trees && pass.recording.trees->wantsTreeOf({x, y}));
   }
 
@@ -536,7 +536,7 @@ class HybridGroup {
       sample = tracePrimary(context_, ray, whitted, traced, treeHere);
     } else {
       ++counters.counts[kFromItemBuffer];
-      const bool seen = pass.items->itemAt(x, y).shape >= 0;
+      const bool seen = itemAt(pass, x, y).shape >= 0;
       const Hit hit = seen ? hitAt(pass, x, y) : Hit{};
       sample = shadeFirstHit(context_, ray, seen ? &hit : nullptr, whitted, traced, treeHere);
     }

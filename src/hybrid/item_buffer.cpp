@@ -7,13 +7,34 @@
 
 namespace rise {
 
-constexpr int kRowsPerRange = 16;
+namespace {
+
+// Where the sweep writes: each face it finds, a face of the projection, is
+// kept by its number in the scene, so that the projection need not be kept:
+// a group of passes holds an item buffer each.
+class SceneFaces final : public VisibleFaces {
+ public:
+  SceneFaces(FaceBuffer& faces, const ScreenGeometry& screen) : faces_(faces), screen_(screen) {}
+
+  int width() const override { return faces_.width(); }
+  int height() const override { return faces_.height(); }
+  void setVisible(int x, int y, int face) override {
+    faces_.setVisible(x, y,
+                      face < 0 ? -1 : screen_.faces[static_cast<std::size_t>(face)].sceneFace);
+  }
+  void addCost(int, int, float) override {}
+  StepRecorder* steps() const override { return faces_.steps(); }
+
+ private:
+  FaceBuffer& faces_;
+  const ScreenGeometry& screen_;
+};
+
+}  // namespace
 
 // The sweep reports its scanlines to a recorder of its own, so that each can
 // be told as the item buffer's: the scanline's colours are not the image's
-// yet, which the second pass settles. The faces the sweep finds are the
-// projection's; each is then told by its number in the scene, so that the
-// projection need not be kept: a group of passes holds an item buffer each.
+// yet, which the second pass settles.
 ItemBuffer::ItemBuffer(const Scene& scene, const TessellatedScene& tessellated,
                        const ScreenGeometry& screen, int width, int height, const Workers& workers,
                        StepRecorder* steps, Stats& stats)
@@ -22,13 +43,8 @@ ItemBuffer::ItemBuffer(const Scene& scene, const TessellatedScene& tessellated,
       sweepSteps_(steps ? std::make_unique<StepRecorder>(steps->budget()) : nullptr),
       faces_(width, height, sweepSteps_.get()) {
   addProjectionStats(stats, screen);
-  sweepScanlines(screen, workers, faces_, stats);
-  workers.forEachRange(height, kRowsPerRange, [&](int, int y0, int y1) {
-    for (int y = y0; y < y1; ++y)
-      for (int x = 0; x < width; ++x)
-        if (const int face = faces_.at(x, y); face >= 0)
-          faces_.setVisible(x, y, screen.faces[static_cast<std::size_t>(face)].sceneFace);
-  });
+  SceneFaces sceneFaces(faces_, screen);
+  sweepScanlines(screen, workers, sceneFaces, stats);
   if (steps) recordFilling(sweepSteps_->allSteps(), *steps);
 }
 

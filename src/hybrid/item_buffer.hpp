@@ -47,7 +47,7 @@ class ItemBuffer {
   const Scene& scene_;
   const TessellatedScene& tessellated_;
   std::unique_ptr<StepRecorder> sweepSteps_;  // the sweep's own steps, when recorded
-  FaceBuffer faces_;                          // the scene's faces, once the sweep is done
+  FaceBuffer faces_;                          // by the scene's face numbers
 };
 
 }  // namespace rise
