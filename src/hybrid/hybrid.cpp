@@ -132,8 +132,11 @@ struct PassRecording {
 // the item buffer's, and the intersection tests made for it go straight to
 // the "cost" buffer.
 struct Pixel {
-  // The primary ray's hit on its item's exact surface (Hit, but the shape,
-  // which is the item's).
+  // The item's shape, -1 where the item buffer shows nothing. The shading
+  // reads it here rather than through the pixel's face: on a million
+  // triangles, that lookup missed the cache at nearly every pixel.
+  int shape = -1;
+  // The primary ray's hit on the item's exact surface.
   float t = kInfinity;
   int primitive = 0;
   Vec2 barycentric{0.0f};
@@ -145,7 +148,7 @@ struct Pixel {
     primitive = hit.primitive;
     barycentric = hit.barycentric;
   }
-  Hit hitOn(const Shape* shape) const { return {t, shape, primitive, barycentric}; }
+  Hit hitOn(const Shape* itemShape) const { return {t, itemShape, primitive, barycentric}; }
 };
 
 // The records of every pixel of a pass, left unfilled: the first sweep of
@@ -356,13 +359,14 @@ class HybridGroup {
     counters.raySeconds += secondsSince(start);
   }
 
-  const Shape* shapeOf(const Item& item) const {
-    return context_.scene.shapes[static_cast<std::size_t>(item.shape)].get();
+  const Shape* shapeNumbered(int shape) const {
+    return context_.scene.shapes[static_cast<std::size_t>(shape)].get();
   }
 
   // The pixel's first hit, on its item.
   Hit hitAt(const GroupPass& pass, int x, int y) const {
-    return at(pass, x, y).hitOn(shapeOf(itemAt(pass, x, y)));
+    const Pixel& pixel = at(pass, x, y);
+    return pixel.hitOn(shapeNumbered(pixel.shape));
   }
 
   // Intersection tests made for the pixel, into its "cost" where wanted.
@@ -374,8 +378,9 @@ class HybridGroup {
   bool intersect(const Item& item, GroupPass& pass, int x, int y, const Ray& ray, Hit& hit,
                  HybridCounters& counters) {
     const std::uint64_t before = counters.traced.intersections.tests;
-    const bool found = shapeOf(item)->intersectPrimitive(item.primitive, ray, 0.0f, hit,
-                                                         counters.traced.intersections);
+    const bool found =
+        shapeNumbered(item.shape)
+            ->intersectPrimitive(item.primitive, ray, 0.0f, hit, counters.traced.intersections);
     const std::uint64_t tests = counters.traced.intersections.tests - before;
     counters.counts[kItemTests] += tests;
     addCost(pass, x, y, tests);
@@ -406,7 +411,7 @@ class HybridGroup {
     const int face = items.faceAt(x, y);
     const Item own = items.itemOf(face);
     const Ray ray = rayAt(pass, x, y);
-    pixel = Pixel{};  // its first write in the render, or what the last group left goes
+    pixel = Pixel{own.shape};  // its first write in the render, or what the last group left goes
     work.coveredPixels += own.shape >= 0 ? 1 : 0;
     if (pass.images.face) pass.images.face->at(x, y) = Color(static_cast<float>(face));
     if (pass.images.cost) pass.images.cost->at(x, y) = Color(0.0f);
@@ -498,7 +503,7 @@ class HybridGroup {
 
   bool shadedInBatch(const GroupPass& pass, int x, int y) const {
     const Pixel& pixel = at(pass, x, y);
-    return pixel.verdict == Verdict::FromItemBuffer && itemAt(pass, x, y).shape >= 0 &&
+    return pixel.verdict == Verdict::FromItemBuffer && pixel.shape >= 0 &&
            !(pass.recording.trees && pass.recording.trees->wantsTreeOf({x, y}));
   }
 
@@ -536,7 +541,7 @@ class HybridGroup {
       sample = tracePrimary(context_, ray, whitted, traced, treeHere);
     } else {
       ++counters.counts[kFromItemBuffer];
-      const bool seen = itemAt(pass, x, y).shape >= 0;
+      const bool seen = pixel.shape >= 0;
       const Hit hit = seen ? hitAt(pass, x, y) : Hit{};
       sample = shadeFirstHit(context_, ray, seen ? &hit : nullptr, whitted, traced, treeHere);
     }

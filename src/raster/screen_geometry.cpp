@@ -171,7 +171,7 @@ class FaceProjector {
   const ViewProjection& view_;
   std::array<glm::vec4, 5> volume_;
   bool backfaceCulling_;
-  std::vector<ViewedVertex> viewed_;
+  UnfilledVector<ViewedVertex> viewed_;  // written by viewVertices, on the workers
 };
 
 // The ranges' kept faces, one after the other, each range written on a

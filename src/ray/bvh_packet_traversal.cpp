@@ -123,6 +123,18 @@ bool anyReaches(const PendingPacketChild& child, EightFloats tMax) {
   return false;
 }
 
+// Asks for the first two cache lines at `memory`: a kept child's, a node or
+// a leaf's first primitives, before it is entered. A large scene's tree is
+// far larger than the caches, and a packet's rays spend long enough on each
+// node for the next to arrive meanwhile: on a million triangles, the
+// hybrid's render without the BVH's build took about a twentieth less. (One
+// ray's traversal, which spends little on each node, gained nothing.)
+void prefetchTwoLines(const void* memory) {
+  const char* const bytes = static_cast<const char*>(memory);
+  __builtin_prefetch(bytes);
+  __builtin_prefetch(bytes + 64);
+}
+
 // The packet goes down the tree as one ray does, nearest child first, into
 // every child that any of its rays meets; a child keeps the lanes of the
 // rays that meet it, and only those test its children and its primitives.
@@ -131,9 +143,9 @@ bool anyReaches(const PendingPacketChild& child, EightFloats tMax) {
 // tMin; lanes past `traversing` reach no box. Each lane's boxes tested are
 // added to its cost.
 template <typename VisitLeaf>
-void walkPacket(std::span<const WideBvhNode> nodes, const BoxPacket& boxes, unsigned traversing,
-                float tMin, EightFloats& tMax, std::array<IntersectionCounters, kPacketSize>& costs,
-                VisitLeaf&& visitLeaf) {
+void walkPacket(std::span<const WideBvhNode> nodes, std::span<const Bvh::LeafPrimitive> primitives,
+                const BoxPacket& boxes, unsigned traversing, float tMin, EightFloats& tMax,
+                std::array<IntersectionCounters, kPacketSize>& costs, VisitLeaf&& visitLeaf) {
   EightInts boxesTested{};
   PendingChildren<PendingPacketChild> pending;
   PendingPacketChild current{0, 0, traversing, tMin};  // the root
@@ -154,9 +166,12 @@ void walkPacket(std::span<const WideBvhNode> nodes, const BoxPacket& boxes, unsi
       for (int child = 0; child < kWideBvhWidth; ++child) {
         const EightFloats entries = boxes.entries(node, child, tMin, reach);
         const unsigned lanes = lanesMet(entries);
-        if (lanes != 0)
-          pending.push(
-              {node.offset[child], node.primitiveCount[child], lanes, nearestEntry(entries)});
+        if (lanes == 0) continue;
+        const std::uint32_t offset = node.offset[child];
+        prefetchTwoLines(node.primitiveCount[child] == 0
+                             ? static_cast<const void*>(&nodes[offset])
+                             : static_cast<const void*>(&primitives[offset]));
+        pending.push({offset, node.primitiveCount[child], lanes, nearestEntry(entries)});
       }
     }
     // The next kept child that some of its rays' hits since leave in reach.
@@ -182,8 +197,8 @@ void Bvh::nearestOfPacket(RayPacket& packet, float tMin) const {
     if (!nodes_.empty() && isFinite(packet.rays[lane])) traversing |= 1u << lane;
   }
   if (traversing == 0) return;
-  walkPacket(nodes_, BoxPacket(packet.rays, packet.size), traversing, tMin, tMax, packet.costs,
-             [&](std::uint32_t first, std::uint32_t count, int lane) {
+  walkPacket(nodes_, primitives_, BoxPacket(packet.rays, packet.size), traversing, tMin, tMax,
+             packet.costs, [&](std::uint32_t first, std::uint32_t count, int lane) {
                packet.found[lane] |= offerLeaf(first, count, packet.rays[lane], tMin, nearest[lane],
                                                packet.costs[lane]);
                return packet.hits[lane].t;
@@ -207,8 +222,8 @@ void Bvh::visitCrossingsOfPacket(ShadowRayPacket& packet, float tMin,
     if (!nodes_.empty() && isFinite(ray)) traversing |= 1u << lane;
   }
   if (traversing == 0) return;
-  walkPacket(nodes_, BoxPacket(packet.rays, packet.size), traversing, tMin, tMax, packet.costs,
-             [&](std::uint32_t first, std::uint32_t count, int lane) {
+  walkPacket(nodes_, primitives_, BoxPacket(packet.rays, packet.size), traversing, tMin, tMax,
+             packet.costs, [&](std::uint32_t first, std::uint32_t count, int lane) {
                const bool goesOn =
                    crossLeaf(first, count, packet.rays[lane], tMin, packet.tMax[lane],
                              *visitors[lane], packet.costs[lane]);

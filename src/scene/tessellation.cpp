@@ -12,17 +12,6 @@
 
 namespace rise {
 
-int Tessellation::addVertex(const SurfaceVertex& vertex) {
-  vertices.push_back(vertex);
-  return static_cast<int>(vertices.size()) - 1;
-}
-
-void Tessellation::addTriangle(int a, int b, int c, int primitive) {
-  if (a == b || b == c || c == a) return;
-  triangles.push_back({a, b, c});
-  primitives.push_back(primitive);
-}
-
 void Tessellation::addConvexPolygon(std::span<const int> corners) {
   for (std::size_t i = 1; i + 1 < corners.size(); ++i)
     addTriangle(corners[0], corners[i], corners[i + 1]);

@@ -74,10 +74,17 @@ struct Tessellation {
   const ProjectedMapping* projection = nullptr;
   Mat4 projectionPlacement{1.0f};
 
-  int addVertex(const SurfaceVertex& vertex);
+  int addVertex(const SurfaceVertex& vertex) {
+    vertices.push_back(vertex);
+    return static_cast<int>(vertices.size()) - 1;
+  }
   // A triangle on the shape's `primitive`; one with a repeated corner (a
   // sphere's pole) is left out.
-  void addTriangle(int a, int b, int c, int primitive = 0);
+  void addTriangle(int a, int b, int c, int primitive = 0) {
+    if (a == b || b == c || c == a) return;
+    triangles.push_back({a, b, c});
+    primitives.push_back(primitive);
+  }
   // A planar convex polygon, as the fan of triangles from its first corner.
   void addConvexPolygon(std::span<const int> corners);
 };

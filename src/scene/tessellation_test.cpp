@@ -2,9 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
+#include <utility>
+#include <vector>
 
+#include "scene/mesh_geometry.hpp"
 #include "scene/shapes/box.hpp"
 #include "scene/shapes/cone.hpp"
 #include "scene/shapes/convex_polygon.hpp"
@@ -12,6 +16,7 @@
 #include "scene/shapes/plane.hpp"
 #include "scene/shapes/sphere.hpp"
 #include "scene/shapes/transformed_shape.hpp"
+#include "scene/shapes/triangle.hpp"
 #include "scene/shapes/triangle_mesh.hpp"
 #include "scene/shapes/vertex_attributes.hpp"
 #include "scene/transform.hpp"
@@ -191,6 +196,79 @@ TEST(Tessellation, KnowsWhichMeshesCloseAroundASolid) {
   EXPECT_FALSE(tessellate(TriangleMesh(corners, inconsistent, 0)).enclosesSolid);
   expectWoundAroundItsNormals(tessellate(TriangleMesh(corners, tetrahedron, 0)));
   expectUnitNormals(tessellate(TriangleMesh(corners, tetrahedron, 0)));
+}
+
+// A grid of squares over the unit square, each cut in two, with normals and
+// texture coordinates at its vertices or not.
+MeshGeometry grid(int side, bool withAttributes) {
+  MeshGeometry geometry;
+  for (int row = 0; row <= side; ++row) {
+    for (int column = 0; column <= side; ++column) {
+      const Vec2 at = Vec2(column, row) / static_cast<float>(side);
+      geometry.positions.emplace_back(at, at.x * at.y);
+      if (!withAttributes) continue;
+      geometry.normals.push_back(glm::normalize(Vec3(-at.y, -at.x, 1.0f)));
+      geometry.uvs.push_back(at);
+    }
+  }
+  for (int row = 0; row < side; ++row) {
+    for (int column = 0; column < side; ++column) {
+      const int corner = row * (side + 1) + column;
+      geometry.triangles.push_back({corner, corner + 1, corner + side + 2});
+      geometry.triangles.push_back({corner, corner + side + 2, corner + side + 1});
+    }
+  }
+  return geometry;
+}
+
+// With normals at its vertices, a mesh is tessellated as it is: its
+// vertices, its triangles, each on its own primitive.
+TEST(Tessellation, TakesAMeshWithNormalsAsItIs) {
+  const MeshGeometry geometry = grid(40, true);
+  const Tessellation tessellation = tessellate(TriangleMesh(geometry, 0));
+  ASSERT_EQ(tessellation.vertices.size(), geometry.positions.size());
+  for (std::size_t i = 0; i < geometry.positions.size(); ++i) {
+    EXPECT_EQ(tessellation.vertices[i].position, geometry.positions[i]);
+    EXPECT_EQ(tessellation.vertices[i].normal, geometry.normals[i]);
+    EXPECT_EQ(tessellation.vertices[i].uv, geometry.uvs[i]);
+  }
+  EXPECT_EQ(tessellation.triangles, geometry.triangles);
+  for (int triangle = 0; triangle < static_cast<int>(tessellation.primitives.size()); ++triangle)
+    ASSERT_EQ(tessellation.primitives[triangle], triangle);
+}
+
+// Without, each triangle has three corners of its own, with its flat normal.
+TEST(Tessellation, GivesEachTriangleOfAMeshWithoutNormalsCornersOfItsOwn) {
+  const MeshGeometry geometry = grid(40, false);
+  const Tessellation tessellation = tessellate(TriangleMesh(geometry, 0));
+  ASSERT_EQ(tessellation.triangles.size(), geometry.triangles.size());
+  ASSERT_EQ(tessellation.vertices.size(), 3 * geometry.triangles.size());
+  for (int triangle = 0; triangle < static_cast<int>(geometry.triangles.size()); ++triangle) {
+    const auto& [a, b, c] = geometry.triangles[triangle];
+    const Vec3 flat =
+        windingNormal(geometry.positions[a], geometry.positions[b], geometry.positions[c]);
+    EXPECT_EQ(tessellation.triangles[triangle],
+              (std::array<int, 3>{3 * triangle, 3 * triangle + 1, 3 * triangle + 2}));
+    EXPECT_EQ(tessellation.primitives[triangle], triangle);
+    for (int corner = 0; corner < 3; ++corner) {
+      const SurfaceVertex& vertex = tessellation.vertices[3 * triangle + corner];
+      EXPECT_EQ(vertex.position, geometry.positions[geometry.triangles[triangle][corner]]);
+      EXPECT_EQ(vertex.normal, flat);
+    }
+  }
+}
+
+// A triangle with a corner twice covers nothing: it is left out, and the
+// others keep their primitives.
+TEST(Tessellation, LeavesOutAMeshTriangleWithARepeatedCorner) {
+  MeshGeometry geometry;
+  geometry.positions = {Vec3(0.0f), Vec3(1.0f, 0.0f, 0.0f), Vec3(0.0f, 1.0f, 0.0f),
+                        Vec3(1.0f, 1.0f, 0.0f)};
+  geometry.normals.assign(4, Vec3(0.0f, 0.0f, 1.0f));
+  geometry.triangles = {{0, 1, 2}, {1, 1, 2}, {1, 3, 2}};
+  const Tessellation tessellation = tessellate(TriangleMesh(std::move(geometry), 0));
+  EXPECT_EQ(tessellation.triangles, (std::vector<std::array<int, 3>>{{0, 1, 2}, {1, 3, 2}}));
+  EXPECT_EQ(tessellation.primitives, (std::vector<int>{0, 2}));
 }
 
 // Placed by a transform that stretches it, a cone keeps its normals'
