@@ -10,6 +10,9 @@
 // Shadow rays from neighbouring points towards one light are as coherent:
 // they go down together the same way, each telling its own visitor of the
 // shapes it crosses, and each leaving the packet when its visitor stops it.
+// They take the children in the order they come, not nearest first: any
+// crossing will do, and a light's unshadowed rays visit every box on their
+// way whatever the order.
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -135,14 +138,15 @@ void prefetchTwoLines(const void* memory) {
   __builtin_prefetch(bytes + 64);
 }
 
-// The packet goes down the tree as one ray does, nearest child first, into
-// every child that any of its rays meets; a child keeps the lanes of the
-// rays that meet it, and only those test its children and its primitives.
+// The packet goes down the tree as one ray does, nearest child first where
+// `kNearestFirst`, into every child that any of its rays meets; a child keeps
+// the lanes of the rays that meet it, and only those test its children and
+// its primitives.
 // `tMax` holds each lane's reach, which visitLeaf(first primitive, count,
 // lane) may shrink as the lane's ray finds hits, or end by setting it below
 // tMin; lanes past `traversing` reach no box. Each lane's boxes tested are
 // added to its cost.
-template <typename VisitLeaf>
+template <bool kNearestFirst, typename VisitLeaf>
 void walkPacket(std::span<const WideBvhNode> nodes, std::span<const Bvh::LeafPrimitive> primitives,
                 const BoxPacket& boxes, unsigned traversing, float tMin, EightFloats& tMax,
                 std::array<IntersectionCounters, kPacketSize>& costs, VisitLeaf&& visitLeaf) {
@@ -171,7 +175,8 @@ void walkPacket(std::span<const WideBvhNode> nodes, std::span<const Bvh::LeafPri
         prefetchTwoLines(node.primitiveCount[child] == 0
                              ? static_cast<const void*>(&nodes[offset])
                              : static_cast<const void*>(&primitives[offset]));
-        pending.push({offset, node.primitiveCount[child], lanes, nearestEntry(entries)});
+        pending.push({offset, node.primitiveCount[child], lanes,
+                      kNearestFirst ? nearestEntry(entries) : tMin});
       }
     }
     // The next kept child that some of its rays' hits since leave in reach.
@@ -197,12 +202,12 @@ void Bvh::nearestOfPacket(RayPacket& packet, float tMin) const {
     if (!nodes_.empty() && isFinite(packet.rays[lane])) traversing |= 1u << lane;
   }
   if (traversing == 0) return;
-  walkPacket(nodes_, primitives_, BoxPacket(packet.rays, packet.size), traversing, tMin, tMax,
-             packet.costs, [&](std::uint32_t first, std::uint32_t count, int lane) {
-               packet.found[lane] |= offerLeaf(first, count, packet.rays[lane], tMin, nearest[lane],
-                                               packet.costs[lane]);
-               return packet.hits[lane].t;
-             });
+  walkPacket<true>(nodes_, primitives_, BoxPacket(packet.rays, packet.size), traversing, tMin, tMax,
+                   packet.costs, [&](std::uint32_t first, std::uint32_t count, int lane) {
+                     packet.found[lane] |= offerLeaf(first, count, packet.rays[lane], tMin,
+                                                     nearest[lane], packet.costs[lane]);
+                     return packet.hits[lane].t;
+                   });
 }
 
 // A ray whose visitor asks to stop leaves the packet. Without eight-wide
@@ -222,13 +227,13 @@ void Bvh::visitCrossingsOfPacket(ShadowRayPacket& packet, float tMin,
     if (!nodes_.empty() && isFinite(ray)) traversing |= 1u << lane;
   }
   if (traversing == 0) return;
-  walkPacket(nodes_, primitives_, BoxPacket(packet.rays, packet.size), traversing, tMin, tMax,
-             packet.costs, [&](std::uint32_t first, std::uint32_t count, int lane) {
-               const bool goesOn =
-                   crossLeaf(first, count, packet.rays[lane], tMin, packet.tMax[lane],
-                             *visitors[lane], packet.costs[lane]);
-               return goesOn ? packet.tMax[lane] : -kInfinity;
-             });
+  walkPacket<false>(nodes_, primitives_, BoxPacket(packet.rays, packet.size), traversing, tMin,
+                    tMax, packet.costs, [&](std::uint32_t first, std::uint32_t count, int lane) {
+                      const bool goesOn =
+                          crossLeaf(first, count, packet.rays[lane], tMin, packet.tMax[lane],
+                                    *visitors[lane], packet.costs[lane]);
+                      return goesOn ? packet.tMax[lane] : -kInfinity;
+                    });
 }
 #else
 void Bvh::visitCrossingsOfPacket(ShadowRayPacket& packet, float tMin,
