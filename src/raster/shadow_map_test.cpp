@@ -5,6 +5,7 @@
 #include "raster/visible_surface_renderer.hpp"
 #include "scene/shapes/convex_polygon.hpp"
 #include "scene/shapes/triangle_mesh.hpp"
+#include "support/shape_testing.hpp"
 
 namespace rise {
 namespace {
@@ -137,18 +138,8 @@ class CountedGrid final : public Shape {
  private:
   // side x side squares of two triangles at height 1 over [-1, 1]^2.
   static MeshGeometry grid(int side) {
-    MeshGeometry geometry;
-    const auto at = [&](int i, int j) { return i * (side + 1) + j; };
-    for (int i = 0; i <= side; ++i)
-      for (int j = 0; j <= side; ++j)
-        geometry.positions.emplace_back(2.0f * static_cast<float>(i) / side - 1.0f, 1.0f,
-                                        2.0f * static_cast<float>(j) / side - 1.0f);
-    for (int i = 0; i < side; ++i)
-      for (int j = 0; j < side; ++j) {
-        geometry.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
-        geometry.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
-      }
-    return geometry;
+    return shape_testing::squareGrid(
+        side, [](Vec2 at) { return Vec3(2.0f * at.x - 1.0f, 1.0f, 2.0f * at.y - 1.0f); });
   }
 
   TriangleMesh mesh_;

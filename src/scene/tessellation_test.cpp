@@ -198,25 +198,15 @@ TEST(Tessellation, KnowsWhichMeshesCloseAroundASolid) {
   expectUnitNormals(tessellate(TriangleMesh(corners, tetrahedron, 0)));
 }
 
-// A grid of squares over the unit square, each cut in two, with normals and
-// texture coordinates at its vertices or not.
+// A grid of squares over the unit square, each cut in two, bent, with normals
+// and texture coordinates at its vertices or not.
 MeshGeometry grid(int side, bool withAttributes) {
-  MeshGeometry geometry;
-  for (int row = 0; row <= side; ++row) {
-    for (int column = 0; column <= side; ++column) {
-      const Vec2 at = Vec2(column, row) / static_cast<float>(side);
-      geometry.positions.emplace_back(at, at.x * at.y);
-      if (!withAttributes) continue;
-      geometry.normals.push_back(glm::normalize(Vec3(-at.y, -at.x, 1.0f)));
-      geometry.uvs.push_back(at);
-    }
-  }
-  for (int row = 0; row < side; ++row) {
-    for (int column = 0; column < side; ++column) {
-      const int corner = row * (side + 1) + column;
-      geometry.triangles.push_back({corner, corner + 1, corner + side + 2});
-      geometry.triangles.push_back({corner, corner + side + 2, corner + side + 1});
-    }
+  MeshGeometry geometry =
+      shape_testing::squareGrid(side, [](Vec2 at) { return Vec3(at.y, at.x, at.x * at.y); });
+  if (!withAttributes) return geometry;
+  for (const Vec3& position : geometry.positions) {
+    geometry.normals.push_back(glm::normalize(Vec3(-position.y, -position.x, 1.0f)));
+    geometry.uvs.push_back(Vec2(position));
   }
   return geometry;
 }

@@ -7,10 +7,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <sstream>
 #include <string>
 
 #include "core/color.hpp"
+#include "scene/mesh_geometry.hpp"
 #include "scene/shape.hpp"
 #include "scene/tessellation.hpp"
 
@@ -104,6 +106,22 @@ inline float uSpan(const Tessellation& tessellation, const std::array<int, 3>& t
     high = std::max(high, tessellation.vertices[corner].uv.x);
   }
   return high - low;
+}
+
+// side x side squares, each cut in two along a diagonal: vertex (i, j),
+// numbered i (side + 1) + j, at place((i, j) / side).
+inline MeshGeometry squareGrid(int side, const std::function<Vec3(Vec2)>& place) {
+  MeshGeometry geometry;
+  const auto at = [&](int i, int j) { return i * (side + 1) + j; };
+  for (int i = 0; i <= side; ++i)
+    for (int j = 0; j <= side; ++j)
+      geometry.positions.push_back(place(Vec2(i, j) / static_cast<float>(side)));
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      geometry.triangles.push_back({at(i, j), at(i, j + 1), at(i + 1, j + 1)});
+      geometry.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i + 1, j)});
+    }
+  return geometry;
 }
 
 }  // namespace rise::shape_testing

@@ -90,24 +90,23 @@ bool TriangleMesh::primitiveTriangle(int triangle, std::array<Vec3, 3>& corners)
 // one: a large mesh's copy is most of its tessellation's time.
 void TriangleMesh::tessellate(const TessellationSettings&, Tessellation& out) const {
   const auto uvAt = [&](int vertex) { return uvs_.empty() ? Vec2(0.0f) : uvs_[vertex]; };
-  const int firstVertex = static_cast<int>(out.vertices.size());
-  out.triangles.reserve(out.triangles.size() + triangles_.size());
-  out.primitives.reserve(out.primitives.size() + triangles_.size());
+  out.triangles.reserve(triangles_.size());
+  out.primitives.reserve(triangles_.size());
   if (!normals_.empty()) {
-    out.vertices.resize(firstVertex + vertices_.size());
+    out.vertices.resize(vertices_.size());
     for (int i = 0; i < static_cast<int>(vertices_.size()); ++i)
-      out.vertices[firstVertex + i] = {vertices_[i], normals_[i], uvAt(i)};
+      out.vertices[i] = {vertices_[i], normals_[i], uvAt(i)};
     for (int triangle = 0; triangle < primitiveCount(); ++triangle) {
       const auto& [a, b, c] = triangles_[triangle];
-      out.addTriangle(firstVertex + a, firstVertex + b, firstVertex + c, triangle);
+      out.addTriangle(a, b, c, triangle);
     }
   } else {
-    out.vertices.resize(firstVertex + 3 * triangles_.size());
+    out.vertices.resize(3 * triangles_.size());
     for (int triangle = 0; triangle < primitiveCount(); ++triangle) {
       const auto& corners = triangles_[triangle];
       const Vec3 normal =
           windingNormal(vertices_[corners[0]], vertices_[corners[1]], vertices_[corners[2]]);
-      const int first = firstVertex + 3 * triangle;
+      const int first = 3 * triangle;
       for (int corner = 0; corner < 3; ++corner)
         out.vertices[first + corner] = {vertices_[corners[corner]], normal, uvAt(corners[corner])};
       out.addTriangle(first, first + 1, first + 2, triangle);
