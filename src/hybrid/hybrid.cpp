@@ -6,8 +6,12 @@
 //
 // Most of a ray tracer's work in a simple scene is finding what each primary
 // ray hits first: one search of the whole scene a pixel. A scanline pass
-// answers that question for every pixel at once, far more cheaply, and rays
-// are then spent where the scanline cannot answer: shadows, mirrors, glass.
+// answers that question for every pixel at once, far more cheaply than a
+// search of every object, and rays are then spent where the scanline cannot
+// answer: shadows, mirrors, glass. (A BVH whose primary rays go down it in
+// packets finds the first hits for less than the scanline pass and the item
+// tests do: bench/README.md. The hybrid's lead, where it has one, is in its
+// shading, below.)
 //   Pass 1, visibility by scanline: the scanline algorithm (scanline.cpp),
 //     sampling pixel centres where the primary rays pass, fills an item
 //     buffer: the polygon seen at each pixel, and so the object under it and,
