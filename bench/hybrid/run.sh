@@ -19,7 +19,7 @@ usage() {
   cat <<EOF
 usage: bench/hybrid/run.sh [--runs N] [--threads N] [--unlit] [--accel NAME] [--out DIR] [BUILD_DIR]
   BUILD_DIR     RISE's build directory, holding the rise executable (default: build)
-  --runs N      render each row N times and keep the best (default: 3)
+  --runs N      render each row N times: the best times, the median ratios (default: 3)
   --threads N   worker threads (default: 2)
   --unlit       the scenes with their lights taken away and their mirrors and glass made
                 matte: every ray a primary ray
@@ -41,18 +41,13 @@ require_count --threads "$threads" 1
 make_mesh_once "$out/bumpy-sphere.ply"
 cp bench/hybrid/million-mirror.yaml bench/hybrid/million-matte.yaml "$out/"
 
-# Prints the path of a copy of the scene $1 in $out/unlit with its lights taken away and its
-# mirrors and glass made matte, its files named by their full paths. Every ray is then a
-# primary ray, and Dreux's premise, that the item buffer finds the primary hits for less than
-# rays do, is tested alone. (Each light and each material of these scenes is on a line of its
-# own.)
+# Prints the path of the scene $1's copy in $out/unlit, lit by nothing and matte
+# (bench/hybrid/unlit-scene).
 unlit_copy() {
-  local scene="$1" copy folder
-  copy="$out/unlit/$(basename "$scene")" folder="$(realpath "$(dirname "$scene")")"
+  local copy
+  copy="$out/unlit/$(basename "$1")"
   mkdir -p "$out/unlit"
-  sed -E -e '/^lights:/,/^[a-z]/{/^  - /d}' -e 's/^lights:.*/lights: []/' \
-    -e 's/, (reflection|transmission|ior): [0-9.]+//g' \
-    -e "s|file: ([^/][^,}]*)|file: $folder/\\1|g" "$scene" >"$copy"
+  bench/hybrid/unlit-scene "$1" >"$copy"
   echo "$copy"
 }
 
