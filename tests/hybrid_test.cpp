@@ -119,6 +119,21 @@ TEST(Hybrid, AntiAliasesAsWhittedDoesWithTheSameSamples) {
   expectWhittedsImage(scene, settings);
 }
 
+// With a circle cut into four segments, a sphere's polygons lie far inside
+// its true outline, and the item buffer is wrong on a band of pixels around
+// it: the outline is followed outwards pixel by pixel, past the pixels of
+// the band already shaded from the item buffer, which are shaded again.
+TEST(Hybrid, FollowsAnOutlineFarBeyondCoarsePolygons) {
+  const Scene scene = pinholeExample("classic.yaml", 96, 72);
+  RenderSettings settings = oneSampleAPixel(scene);
+  settings.tessellation = 1;
+  expectWhittedsImage(scene, settings);
+  const Stats stats = render("hybrid", scene, settings).stats;
+  EXPECT_EQ(stats.value("primary_rays") + stats.value("primary_rays_from_item_buffer"), 96 * 72);
+  EXPECT_EQ(stats.value("fallback_pixels"), stats.value("primary_rays"));
+  EXPECT_GT(stats.value("fallback_pixels_inside_outline"), 200.0);
+}
+
 // The counters explain the work: every sample is answered by the item
 // buffer or by a full primary ray, the full ones are the fallback pixels, and
 // a scene without mirrors or glass spawns shadow rays only.

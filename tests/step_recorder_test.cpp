@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <string>
+#include <utility>
 
 #include "algorithms/registry.hpp"
 #include "algorithms/settings_for_scene.hpp"
@@ -279,6 +281,52 @@ std::map<RayKind, int> raysByKind(const RayTree& tree) {
   std::map<RayKind, int> kinds;
   for (const RayNode& ray : tree.rays) ++kinds[ray.kind];
   return kinds;
+}
+
+// With a circle cut into four segments, a sphere's polygons lie far inside
+// its true outline: the hybrid follows the outline once every row is shaded,
+// and shades again the pixels it reaches. One more step of rays marks them
+// and settles nothing, so that every pixel is still settled once and the
+// steps mark every pixel that fell back; and the ray tree of such a pixel is
+// its final shading's, its one full primary ray.
+TEST(StepRecorder, TheHybridShowsThePixelsAnOutlineShadedAgain) {
+  const Scene scene = example("classic.yaml");
+  RenderSettings settings = small(scene, 96, 72);
+  settings.tessellation = 1;
+  Recording recording;
+  const RenderResult result = render("hybrid", scene, settings, recording);
+  const std::vector<Step> steps = recording.recorder.allSteps();
+  Image settledTimes(settings.width, settings.height);
+  std::set<std::pair<float, float>> markedFallingBack;
+  for (std::size_t i = static_cast<std::size_t>(settings.height); i < steps.size(); ++i) {
+    ASSERT_EQ(steps[i].kind, "rays");
+    for (const PixelRect& area : steps[i].settled)
+      for (int y = area.y0; y < area.y1; ++y)
+        for (int x = area.x0; x < area.x1; ++x) settledTimes.at(x, y) += Color(1.0f);
+    for (const StepShape& shape : steps[i].shapes)
+      if (shape.role == "fallback")
+        markedFallingBack.insert({shape.points[0].x, shape.points[0].y});
+  }
+  for (const Color& times : settledTimes.pixels()) ASSERT_EQ(times, Color(1.0f));
+  const Step& last = steps.back();
+  EXPECT_TRUE(last.settled.empty());
+  ASSERT_FALSE(last.tables.empty());
+  ASSERT_GT(last.tables.front().rows.size(), 20u);
+  EXPECT_EQ(static_cast<double>(markedFallingBack.size()), result.stats.value("fallback_pixels"));
+
+  const auto& row = last.tables.front().rows.front();
+  const glm::ivec2 pixel(static_cast<int>(std::get<double>(row[0])),
+                         static_cast<int>(std::get<double>(row[1])));
+  Recording treeRecording(treeOf(pixel));
+  const RenderResult again = render("hybrid", scene, settings, treeRecording);
+  const std::vector<RayTree> trees = treeRecording.recorder.trees();
+  ASSERT_EQ(trees.size(), 1u);
+  EXPECT_EQ(raysByKind(trees.front())[RayKind::Primary], 1);
+  const Color expected = again.image.at(pixel.x, pixel.y);
+  EXPECT_EQ(expected, result.image.at(pixel.x, pixel.y));
+  const Color sum = treesSum(trees);
+  for (int channel = 0; channel < 3; ++channel)
+    EXPECT_NEAR(sum[channel], expected[channel], 1e-4f + 1e-4f * expected[channel]);
 }
 
 TEST(StepRecorder, TreesHoldTheRaysOfGlassAndMirrors) {

@@ -41,6 +41,12 @@
 //            reaches past its polygons. The neighbours of such a pixel are
 //            tested against the same item in turn, so that the test follows
 //            the outline as far out as it reaches.
+// A pixel's own tests need only the item buffer, so each pixel is tested and
+// shaded at once, a run of a row at a time, and nothing of it is kept in
+// memory the size of the image but what its steps show. The outlines are
+// followed once every row is shaded; the pixels they reach beyond the
+// neighbours of their polygons (few, but a band of them around a coarsely
+// cut sphere) are shaded again, by full primary rays.
 // Everywhere else the item buffer's answer is the primary ray's, to the bit.
 // (A sliver of an exact surface narrower than a pixel, where none of its
 // polygons is seen nearby, escapes the rule: a few pixels at most.)
@@ -131,34 +137,24 @@ struct PassRecording {
   int index;
 };
 
-// What pass 2 knows of a pixel, from its first sweep to its shading, kept
-// small: a group holds it for every pixel of each of its passes. Its item is
-// the item buffer's, and the intersection tests made for it go straight to
-// the "cost" buffer.
-struct Pixel {
-  // The item's shape, -1 where the item buffer shows nothing. The shading
-  // reads it here rather than through the pixel's face: on a million
-  // triangles, that lookup missed the cache at nearly every pixel.
-  int shape = -1;
-  // The primary ray's hit on the item's exact surface.
-  float t = kInfinity;
-  int primitive = 0;
-  Vec2 barycentric{0.0f};
-  Verdict verdict = Verdict::FromItemBuffer;
-  bool mirrorOrGlass = false;  // its shading spawned reflected or refracted rays
-
-  void keep(const Hit& hit) {
-    t = hit.t;
-    primitive = hit.primitive;
-    barycentric = hit.barycentric;
-  }
-  Hit hitOn(const Shape* itemShape) const { return {t, itemShape, primitive, barycentric}; }
+// A pixel's primary ray and the first hit the item buffer and the item tests
+// found for it, from the moment they are found to its shading a few dozen
+// pixels later, and never written to memory of the image's size.
+struct FoundHit {
+  Ray ray;
+  Hit hit;  // on the item's exact surface: its shape none where the item buffer shows nothing
 };
 
-// The records of every pixel of a pass, left unfilled: the first sweep of
-// pass 2 writes each, on the workers, so that the memory is first touched on
-// all of them and not on one.
-using PixelRecords = UnfilledVector<Pixel>;
+// What pass 2 settled of each pixel of a pass, for the pass's steps and for
+// an outline found after the pixel was shaded, which must know what it takes
+// back. Left unfilled: the workers write each pixel's, so that its memory is
+// first touched on all of them and not on one.
+struct Settled {
+  Verdict verdict = Verdict::FromItemBuffer;
+  bool mirrorOrGlass = false;  // its shading spawned reflected or refracted rays
+  bool spawnedRays = false;    // ... or any rays
+};
+using SettledPixels = UnfilledVector<Settled>;
 
 // The pass's image and buffers, filled pixel by pixel.
 struct Images {
@@ -175,43 +171,30 @@ struct Images {
   Image* face = result.buffer("face");
 };
 
-// One pass of a group: where its rays go, where it reports, what its first
-// sweep found of each pixel and the images its shading fills.
+// One pass of a group: where its rays go, where it reports, what pass 2
+// settled of each pixel and the images its shading fills.
 struct GroupPass {
-  GroupPass(const AccumulationPass& pass, const PassRecording& recording, PixelRecords& pixels,
+  GroupPass(const AccumulationPass& pass, const PassRecording& recording, SettledPixels& settled,
             const RenderSettings& settings)
-      : pass(pass), recording(recording), pixels(pixels), images(settings, recording.index == 0) {
-    pixels.resize(static_cast<std::size_t>(settings.width) * settings.height);
+      : pass(pass), recording(recording), settled(settled), images(settings, recording.index == 0) {
+    settled.resize(static_cast<std::size_t>(settings.width) * settings.height);
   }
 
   const AccumulationPass& pass;
   const PassRecording recording;
-  PixelRecords& pixels;  // the render's, kept from group to group
+  SettledPixels& settled;  // the render's, kept from group to group
   Images images;
   const ItemBuffer* items = nullptr;  // once pass 1 has filled it
 };
 
-// The counters of a group's shading: its first pass's apart, for that
-// pass's steps.
-struct GroupCounters {
-  HybridCounters firstPass, otherPasses;
-
-  GroupCounters& operator+=(const GroupCounters& other) {
-    firstPass += other.firstPass;
-    otherPasses += other.otherPasses;
-    return *this;
-  }
-};
-
 // Both passes of a group of accumulation passes: pass 1 for each, then pass
-// 2 for them all, its first sweep and its shading each taking a pixel's
-// samples one after another.
+// 2 for them all, a pixel's samples one after another.
 class HybridGroup {
  public:
   HybridGroup(const TracingContext& context, const TessellatedScene& tessellated,
               const RenderSettings& settings, std::span<const AccumulationPass> passes,
               int firstPass, PassProjections& projections, RenderObserver& observer,
-              StepRecorder* trees, std::vector<PixelRecords>& pixels)
+              StepRecorder* trees, std::vector<SettledPixels>& settled)
       : context_(context),
         tessellated_(tessellated),
         settings_(settings),
@@ -219,33 +202,42 @@ class HybridGroup {
         observer_(observer),
         workers_(settings.threads, observer),
         view_(context.scene.camera, settings.width, settings.height) {
-    pixels.resize(std::max(pixels.size(), passes.size()));
+    settled.resize(std::max(settled.size(), passes.size()));
     for (std::size_t i = 0; i < passes.size(); ++i) {
       const PassRecording recording{i == 0 ? observer.stepRecorder() : nullptr, trees,
                                     firstPass + static_cast<int>(i)};
-      passes_.emplace_back(passes[i], recording, pixels[i], settings);
+      passes_.emplace_back(passes[i], recording, settled[i], settings);
     }
   }
 
   std::vector<RenderResult> run(HybridCounters& counters) {
-    findHits(counters);
+    std::vector<Stats> stats(passes_.size());
+    fillItemBuffers(stats, counters);
     const auto start = std::chrono::steady_clock::now();
-    const GroupCounters shaded = inBands<GroupCounters>(
-        [&](int y, int x0, int x1, GroupCounters& band) { shadeRow(y, x0, x1, band); },
-        [&](const PixelRect& band, int task, const GroupCounters& bandCounters) {
+    BandWork work = inBands<BandWork>(
+        [&](int y, int x0, int x1, BandWork& band) { findAndShadeRow(y, x0, x1, band); },
+        [&](const PixelRect& band, int task, const BandWork& bandWork) {
           const GroupPass& first = passes_.front();
           if (first.recording.steps)
             first.recording.steps->record(
-                raysStep(band, bandCounters.firstPass,
-                         [&](int x, int y) {
-                           const Pixel& pixel = at(first, x, y);
-                           return RayPassPixel{pixel.verdict, pixel.mirrorOrGlass};
-                         }),
+                raysStep(band, bandWork.passes.front().counters,
+                         [&](int x, int y) { return shownOf(first, x, y); }),
                 settings_.height + task);
           observer_.onPixelsDone(band, first.images.image);
         });
-    counters += shaded.firstPass;
-    counters += shaded.otherPasses;
+    work.passes.resize(passes_.size());
+    for (std::size_t i = 0; i < passes_.size(); ++i) {
+      PassWork& passWork = work.passes[i];
+      // A cancelled pass 2 left pixels unwritten, which the outlines may not
+      // read.
+      if (!workers_.cancelled()) {
+        followOutlines(passes_[i], passWork);
+        shadeTreePixels(passes_[i], passWork);
+      }
+      counters += passWork.counters;
+      stats[i].add("covered_pixels", static_cast<double>(passWork.coveredPixels));
+      passes_[i].images.result.stats = std::move(stats[i]);
+    }
     counters.raySeconds += secondsSince(start);
 
     std::vector<RenderResult> results;
@@ -260,24 +252,32 @@ class HybridGroup {
     int x, y;
     Item item;
   };
-  // What the first sweep of pass 2 found in a pass, its seeds in order.
+  // The pixel whose ray tree is recorded, left to be shaded once the
+  // outlines are followed: its tree is then the one of its final shading.
+  struct TreePixel {
+    int x, y;
+    FoundHit found;
+  };
+  // What pass 2 did in a pass, its seeds in order.
   struct PassWork {
     HybridCounters counters;
     std::vector<Seed> seeds;
+    std::vector<TreePixel> treePixels;
     std::uint64_t coveredPixels = 0;  // those where the item buffer shows an object
 
     PassWork& operator+=(const PassWork& other) {
       counters += other.counters;
       coveredPixels += other.coveredPixels;
       seeds.insert(seeds.end(), other.seeds.begin(), other.seeds.end());
+      treePixels.insert(treePixels.end(), other.treePixels.begin(), other.treePixels.end());
       return *this;
     }
   };
-  // What it found in each pass of the group.
-  struct SweepWork {
+  // What it did in each pass of the group.
+  struct BandWork {
     std::vector<PassWork> passes;
 
-    SweepWork& operator+=(const SweepWork& other) {
+    BandWork& operator+=(const BandWork& other) {
       passes.resize(std::max(passes.size(), other.passes.size()));
       for (std::size_t i = 0; i < other.passes.size(); ++i) passes[i] += other.passes[i];
       return *this;
@@ -285,11 +285,20 @@ class HybridGroup {
   };
 
   Item itemAt(const GroupPass& pass, int x, int y) const { return pass.items->itemAt(x, y); }
-  Pixel& at(GroupPass& pass, int x, int y) const {
-    return pass.pixels[static_cast<std::size_t>(y) * settings_.width + x];
+  Settled& settledAt(const GroupPass& pass, int x, int y) const {
+    return pass.settled[static_cast<std::size_t>(y) * settings_.width + x];
   }
-  const Pixel& at(const GroupPass& pass, int x, int y) const {
-    return pass.pixels[static_cast<std::size_t>(y) * settings_.width + x];
+  RayPassPixel shownOf(const GroupPass& pass, int x, int y) const {
+    const Settled& pixel = settledAt(pass, x, y);
+    return {pixel.verdict, pixel.mirrorOrGlass};
+  }
+  bool isTreePixel(const GroupPass& pass, int x, int y) const {
+    return pass.recording.trees && pass.recording.trees->wantsTreeOf({x, y});
+  }
+  // A pixel shaded after its band, to the observer: the first pass's, whose
+  // image it shows.
+  void showShaded(const GroupPass& pass, int x, int y) {
+    if (&pass == &passes_.front()) observer_.onPixelsDone({x, y, x + 1, y + 1}, pass.images.image);
   }
 
   // Calls visitRow(y, x0, x1, part) for every row of every band, band by
@@ -336,41 +345,8 @@ class HybridGroup {
     counters.itemBufferSeconds += secondsSince(start);
   }
 
-  // Pass 1, and the first sweep of pass 2 over all the passes, a pixel's
-  // samples one after another: they find in the cache the surfaces the first
-  // one fetched. Then the outlines are followed.
-  void findHits(HybridCounters& counters) {
-    std::vector<Stats> stats(passes_.size());
-    fillItemBuffers(stats, counters);
-    const auto start = std::chrono::steady_clock::now();
-    SweepWork found = inBands<SweepWork>(
-        [&](int y, int x0, int x1, SweepWork& band) {
-          band.passes.resize(passes_.size());
-          for (int x = x0; x < x1; ++x)
-            for (std::size_t i = 0; i < passes_.size(); ++i)
-              findHit(passes_[i], x, y, band.passes[i]);
-        },
-        [](const PixelRect&, int, const SweepWork&) {});
-    for (std::size_t i = 0; i < passes_.size(); ++i) {
-      PassWork& work = found.passes[i];
-      counters += work.counters;
-      // A cancelled sweep left pixels unwritten, which neither the outlines
-      // nor the shading (whose workers take no task then) may read.
-      if (!workers_.cancelled()) followOutlines(passes_[i], std::move(work.seeds), counters);
-      stats[i].add("covered_pixels", static_cast<double>(work.coveredPixels));
-      passes_[i].images.result.stats = std::move(stats[i]);
-    }
-    counters.raySeconds += secondsSince(start);
-  }
-
   const Shape* shapeNumbered(int shape) const {
     return context_.scene.shapes[static_cast<std::size_t>(shape)].get();
-  }
-
-  // The pixel's first hit, on its item.
-  Hit hitAt(const GroupPass& pass, int x, int y) const {
-    const Pixel& pixel = at(pass, x, y);
-    return pixel.hitOn(shapeNumbered(pixel.shape));
   }
 
   // Intersection tests made for the pixel, into its "cost" where wanted.
@@ -391,38 +367,41 @@ class HybridGroup {
     return found;
   }
 
-  // Whether `item` meets the pixel's ray before the pixel's own item does
-  // (at the same distance, the one the structures would pick: the first in
-  // the scene's order).
-  bool coversNearer(const Item& item, GroupPass& pass, int x, int y, const Ray& ray,
+  // The pixel's ray against its own item's exact surface: the hit, or none
+  // (its shape none) where the item buffer shows nothing or the ray misses.
+  Hit ownHit(GroupPass& pass, int x, int y, const Ray& ray, HybridCounters& counters) {
+    const Item own = itemAt(pass, x, y);
+    Hit hit;
+    if (own.shape >= 0 && intersect(own, pass, x, y, ray, hit, counters))
+      hit.shape = shapeNumbered(own.shape);
+    return hit;
+  }
+
+  // Whether `item` meets the pixel's ray before the pixel's own item does,
+  // `own` its ray and its hit (at the same distance, the one the structures
+  // would pick: the first in the scene's order).
+  bool coversNearer(const Item& item, GroupPass& pass, int x, int y, const FoundHit& own,
                     HybridCounters& counters) {
     Hit hit;
-    if (!intersect(item, pass, x, y, ray, hit, counters)) return false;
-    const Item own = itemAt(pass, x, y);
-    return std::tie(hit.t, item) < std::tie(at(pass, x, y).t, own);
+    if (!intersect(item, pass, x, y, own.ray, hit, counters)) return false;
+    const Item ownItem = itemAt(pass, x, y);
+    return std::tie(hit.t, item) < std::tie(own.hit.t, ownItem);
   }
 
-  void fallBack(Pixel& pixel) {
-    if (pixel.verdict == Verdict::FromItemBuffer) pixel.verdict = Verdict::Inside;
-  }
-
-  // Pass 2 begins: the pixel's ray against its own item's exact surface, then
-  // against each other item seen beside it; those that cover it nearer are
-  // the seeds of followOutlines.
-  void findHit(GroupPass& pass, int x, int y, PassWork& work) {
+  // Pass 2 begins at each pixel: its ray against its own item's exact
+  // surface, then against each other item seen beside it; those that cover
+  // it nearer make it fall back, and are the seeds of followOutlines.
+  FoundHit findHit(GroupPass& pass, int x, int y, PassWork& work) {
     const ItemBuffer& items = *pass.items;
-    Pixel& pixel = at(pass, x, y);
     const int face = items.faceAt(x, y);
     const Item own = items.itemOf(face);
+    if (pass.images.cost) pass.images.cost->at(x, y) = Color(0.0f);
     const Ray ray = rayAt(pass, x, y);
-    pixel = Pixel{own.shape};  // its first write in the render, or what the last group left goes
+    const FoundHit found{ray, ownHit(pass, x, y, ray, work.counters)};
     work.coveredPixels += own.shape >= 0 ? 1 : 0;
     if (pass.images.face) pass.images.face->at(x, y) = Color(static_cast<float>(face));
-    if (pass.images.cost) pass.images.cost->at(x, y) = Color(0.0f);
-    Hit hit;
-    if (own.shape >= 0 && !intersect(own, pass, x, y, ray, hit, work.counters))
-      pixel.verdict = Verdict::Outside;
-    pixel.keep(hit);
+    Settled& settled = settledAt(pass, x, y);
+    settled = {own.shape >= 0 && !found.hit.shape ? Verdict::Outside : Verdict::FromItemBuffer};
     std::array<Item, 4> tested;
     int count = 0;
     forEachNeighbour(x, y, [&](int nx, int ny) {
@@ -432,83 +411,118 @@ class HybridGroup {
       const auto end = tested.begin() + count;
       if (item == own || std::find(tested.begin(), end, item) != end) return;
       tested[static_cast<std::size_t>(count++)] = item;
-      if (!coversNearer(item, pass, x, y, ray, work.counters)) return;
-      fallBack(pixel);
+      if (!coversNearer(item, pass, x, y, found, work.counters)) return;
+      if (settled.verdict == Verdict::FromItemBuffer) settled.verdict = Verdict::Inside;
       work.seeds.push_back({x, y, item});
     });
+    return found;
   }
 
   // From each seed outwards, while the item keeps covering the pixels it
   // reaches: the true outline beyond the polygons. Seldom more than a pixel
-  // or two, so done on one thread.
-  void followOutlines(GroupPass& pass, std::vector<Seed> seeds, HybridCounters& counters) {
+  // or two, so done on one thread, once every pixel is shaded: a pixel it
+  // reaches that the item buffer answered is shaded again, by a full
+  // primary ray. Its first shading's rays stay counted, as the work they
+  // were; what it was counted as is taken back.
+  void followOutlines(GroupPass& pass, PassWork& work) {
+    HybridCounters outlines;
+    std::vector<glm::ivec2> shadedAgain;
     std::set<std::tuple<int, int, Item>> tested;
-    for (const Seed& seed : seeds) tested.insert({seed.x, seed.y, seed.item});
-    std::deque<Seed> pending(seeds.begin(), seeds.end());
+    for (const Seed& seed : work.seeds) tested.insert({seed.x, seed.y, seed.item});
+    std::deque<Seed> pending(work.seeds.begin(), work.seeds.end());
     while (!pending.empty()) {
       const Seed seed = pending.front();
       pending.pop_front();
       forEachNeighbour(seed.x, seed.y, [&](int x, int y) {
         if (itemAt(pass, x, y) == seed.item || !tested.insert({x, y, seed.item}).second) return;
-        if (!coversNearer(seed.item, pass, x, y, rayAt(pass, x, y), counters)) return;
-        fallBack(at(pass, x, y));
+        const Ray ray = rayAt(pass, x, y);
+        const FoundHit found{ray, ownHit(pass, x, y, ray, outlines)};
+        if (!coversNearer(seed.item, pass, x, y, found, outlines)) return;
         pending.push_back({x, y, seed.item});
+        Settled& settled = settledAt(pass, x, y);
+        if (settled.verdict != Verdict::FromItemBuffer) return;
+        settled.verdict = Verdict::Inside;
+        if (isTreePixel(pass, x, y)) return;  // not shaded yet
+        HybridCounters& counted = work.counters;
+        --counted.counts[kFromItemBuffer];
+        counted.counts[kSpawning] -= settled.spawnedRays;
+        counted.counts[kMirrorOrGlass] -= settled.mirrorOrGlass;
+        shade(pass, x, y, found, outlines);
+        shadedAgain.push_back({x, y});
+        showShaded(pass, x, y);
       });
+    }
+    work.counters += outlines;
+    const GroupPass& first = passes_.front();
+    if (!shadedAgain.empty() && &pass == &first && first.recording.steps)
+      first.recording.steps->record(
+          shadedAgainStep(shadedAgain, outlines,
+                          [&](int x, int y) { return shownOf(first, x, y); }),
+          std::int64_t{2} * settings_.height);
+  }
+
+  void shadeTreePixels(GroupPass& pass, PassWork& work) {
+    for (const TreePixel& pixel : work.treePixels) {
+      shade(pass, pixel.x, pixel.y, pixel.found, work.counters);
+      showShaded(pass, pixel.x, pixel.y);
     }
   }
 
-  // A row's pixels, a run of neighbours at a time. The pixels whose first
-  // hits the item buffer gave are shaded as a batch (first_hit_batch.hpp),
-  // their shadow rays traced together: each pixel's samples in the group's
-  // passes one after another, so that a packet's rays leave from one pixel,
+  // A row's pixels, a run of neighbours at a time: each pixel's first hit
+  // found in each pass of the group, then the run shaded. The pixels whose
+  // first hits the item buffer gave are shaded as a batch
+  // (first_hit_batch.hpp), their shadow rays traced together: each pixel's
+  // samples one after another, so that a packet's rays leave from one pixel,
   // or two, towards one light, and meet nearly the same boxes. The others,
-  // and the pixel whose ray tree is recorded, are shaded whole at once.
-  void shadeRow(int y, int x0, int x1, GroupCounters& counters) {
+  // are shaded whole at once; the pixel whose ray tree is recorded, last.
+  void findAndShadeRow(int y, int x0, int x1, BandWork& work) {
     constexpr int kRun = 64;
+    work.passes.resize(passes_.size());
     FirstHitBatch batch(context_);
     struct Batched {
-      GroupPass* pass;
+      std::size_t pass;
       int x;
     };
     std::vector<Batched> batched;  // where each of the batch's hits is from
     SingleRayChoices whitted;
-    const auto countersOf = [&](const GroupPass& pass) -> HybridCounters& {
-      return &pass == &passes_.front() ? counters.firstPass : counters.otherPasses;
-    };
     for (int start = x0; start < x1; start += kRun) {
       batch.clear();
       batched.clear();
       for (int x = start; x < std::min(x1, start + kRun); ++x) {
-        for (GroupPass& pass : passes_) {
-          HybridCounters& passCounters = countersOf(pass);
-          if (!shadedInBatch(pass, x, y)) {
-            shade(pass, x, y, passCounters);
+        for (std::size_t i = 0; i < passes_.size(); ++i) {
+          GroupPass& pass = passes_[i];
+          HybridCounters& counters = work.passes[i].counters;
+          const FoundHit found = findHit(pass, x, y, work.passes[i]);
+          if (isTreePixel(pass, x, y)) {
+            work.passes[i].treePixels.push_back({x, y, found});
             continue;
           }
-          ++passCounters.counts[kFromItemBuffer];
-          batched.push_back({&pass, x});
-          batch.add(rayAt(pass, x, y), hitAt(pass, x, y), whitted, passCounters.traced);
+          if (!shadedInBatch(pass, found, x, y)) {
+            shade(pass, x, y, found, counters);
+            continue;
+          }
+          ++counters.counts[kFromItemBuffer];
+          batched.push_back({i, x});
+          batch.add(found.ray, found.hit, whitted, counters.traced);
         }
       }
       batch.traceShadowRays();
       for (std::size_t i = 0; i < batch.size(); ++i) {
-        GroupPass& pass = *batched[i].pass;
+        GroupPass& pass = passes_[batched[i].pass];
         const int x = batched[i].x;
-        HybridCounters& passCounters = countersOf(pass);
+        HybridCounters& counters = work.passes[batched[i].pass].counters;
         const IntersectionCounters shadowRayCosts = batch.shadowRayCosts(i);
-        passCounters.traced.intersections += shadowRayCosts;
+        counters.traced.intersections += shadowRayCosts;
         addCost(pass, x, y, shadowRayCosts.tests);
-        const RaysSoFar before(passCounters.traced);
-        const SampleResult sample = batch.finish(i, whitted, passCounters.traced);
-        record(pass, x, y, sample, batch.sentShadowRays(i), before, passCounters);
+        const RaysSoFar before(counters.traced);
+        const SampleResult sample = batch.finish(i, whitted, counters.traced);
+        record(pass, x, y, sample, batch.sentShadowRays(i), before, counters);
       }
     }
   }
 
-  bool shadedInBatch(const GroupPass& pass, int x, int y) const {
-    const Pixel& pixel = at(pass, x, y);
-    return pixel.verdict == Verdict::FromItemBuffer && pixel.shape >= 0 &&
-           !(pass.recording.trees && pass.recording.trees->wantsTreeOf({x, y}));
+  bool shadedInBatch(const GroupPass& pass, const FoundHit& found, int x, int y) const {
+    return settledAt(pass, x, y).verdict == Verdict::FromItemBuffer && found.hit.shape;
   }
 
   // The counts of the rays traced so far, to tell what a pixel's shading
@@ -524,30 +538,28 @@ class HybridGroup {
 
   // Whitted's Shade from the item's hit, or his whole primary ray where the
   // pixel fell back.
-  void shade(GroupPass& pass, int x, int y, HybridCounters& counters) {
-    const Pixel& pixel = at(pass, x, y);
+  void shade(GroupPass& pass, int x, int y, const FoundHit& found, HybridCounters& counters) {
+    const Verdict verdict = settledAt(pass, x, y).verdict;
     TraceCounters& traced = counters.traced;
     const RaysSoFar before(traced);
     SingleRayChoices whitted;
     // A tree is made only for the pixel recorded.
     std::optional<RayTree> tree;
-    if (pass.recording.trees && pass.recording.trees->wantsTreeOf({x, y})) {
+    if (isTreePixel(pass, x, y)) {
       tree.emplace();
       tree->pixel = {x, y};
       tree->sample = pass.recording.index;
       tree->raster = Vec2(x, y) + pass.pass.pixelOffset;
     }
     RayTree* const treeHere = tree ? &*tree : nullptr;
-    const Ray ray = rayAt(pass, x, y);
     SampleResult sample;
-    if (pixel.verdict != Verdict::FromItemBuffer) {
-      ++counters.counts[pixel.verdict == Verdict::Outside ? kOutside : kInside];
-      sample = tracePrimary(context_, ray, whitted, traced, treeHere);
+    if (verdict != Verdict::FromItemBuffer) {
+      ++counters.counts[verdict == Verdict::Outside ? kOutside : kInside];
+      sample = tracePrimary(context_, found.ray, whitted, traced, treeHere);
     } else {
       ++counters.counts[kFromItemBuffer];
-      const bool seen = pixel.shape >= 0;
-      const Hit hit = seen ? hitAt(pass, x, y) : Hit{};
-      sample = shadeFirstHit(context_, ray, seen ? &hit : nullptr, whitted, traced, treeHere);
+      const Hit* const seen = found.hit.shape ? &found.hit : nullptr;
+      sample = shadeFirstHit(context_, found.ray, seen, whitted, traced, treeHere);
     }
     if (tree) pass.recording.trees->recordTree(std::move(*tree));
     record(pass, x, y, sample, traced.shadowRays > before.shadow, before, counters);
@@ -557,11 +569,12 @@ class HybridGroup {
   // since `before`, into the counters.
   void record(GroupPass& pass, int x, int y, const SampleResult& sample, bool spawnedShadowRays,
               const RaysSoFar& before, HybridCounters& counters) {
-    Pixel& pixel = at(pass, x, y);
+    Settled& settled = settledAt(pass, x, y);
     const TraceCounters& traced = counters.traced;
-    pixel.mirrorOrGlass = traced.reflectionRays + traced.refractionRays > before.mirrorOrGlass;
-    counters.counts[kSpawning] += spawnedShadowRays || pixel.mirrorOrGlass;
-    counters.counts[kMirrorOrGlass] += pixel.mirrorOrGlass;
+    settled.mirrorOrGlass = traced.reflectionRays + traced.refractionRays > before.mirrorOrGlass;
+    settled.spawnedRays = spawnedShadowRays || settled.mirrorOrGlass;
+    counters.counts[kSpawning] += settled.spawnedRays;
+    counters.counts[kMirrorOrGlass] += settled.mirrorOrGlass;
     addCost(pass, x, y, traced.intersections.tests - before.tests);
 
     Images& images = pass.images;
@@ -583,15 +596,15 @@ class HybridGroup {
 
 // Four passes in a group: a packet of eight shadow rays then leaves from two
 // neighbouring pixels, and more passes gain little more and take memory.
-// Fewer where the pixels' records and images of four passes would take more
-// than a quarter of a gigabyte (a large image), and at least one.
+// Fewer where the pixels' images of four passes would take more than a
+// quarter of a gigabyte (a large image), and at least one.
 int largestGroup(const RenderSettings& settings) {
   constexpr std::size_t kPasses = 4;
   constexpr std::size_t kGroupBytes = std::size_t{256} << 20;
   const std::size_t images = settings.wantsBuffer("cost") ? 2 : 1;
   const std::size_t passBytes =
       std::max<std::size_t>(1, static_cast<std::size_t>(settings.width) * settings.height *
-                                   (sizeof(Pixel) + images * sizeof(Color)));
+                                   (sizeof(Settled) + images * sizeof(Color)));
   return static_cast<int>(std::clamp<std::size_t>(kGroupBytes / passBytes, 1, kPasses));
 }
 
@@ -602,13 +615,13 @@ RenderResult HybridRenderer::render(const Scene& scene, const RenderSettings& se
   const SceneIntersector intersector(scene, settings.accel, settings.threads);
   const TracingContext context{scene, intersector, settings.maxDepth};
   HybridCounters counters;
-  std::vector<PixelRecords> pixels;
+  std::vector<SettledPixels> settled;
   RenderResult result = renderInPassGroups(
       scene, settings, observer, largestGroup(settings),
       [&](const TessellatedScene& tessellated, std::span<const AccumulationPass> passes,
           int firstPass, PassProjections& projections, RenderObserver& groupObserver) {
         return HybridGroup(context, tessellated, settings, passes, firstPass, projections,
-                           groupObserver, observer.stepRecorder(), pixels)
+                           groupObserver, observer.stepRecorder(), settled)
             .run(counters);
       });
   addHybridStats(result.stats, counters);

@@ -24,11 +24,16 @@ void addHybridStats(Stats& stats, const HybridCounters& counters) {
   stats.add("ray_pass_seconds", counters.raySeconds);
 }
 
-Step raysStep(const PixelRect& band, const HybridCounters& counters,
-              const std::function<RayPassPixel(int, int)>& pixelAt) {
+namespace {
+
+// A step of pass 2 with its counters, its pixels marked as `pixelAt` tells
+// of each pixel `visit` passes it.
+template <typename ForEachPixel>
+Step passTwoStep(std::string title, const HybridCounters& counters,
+                 const std::function<RayPassPixel(int, int)>& pixelAt,
+                 const ForEachPixel& forEachPixel) {
   const auto count = [&](Count kind) { return static_cast<double>(counters.counts[kind]); };
-  Step step("rays", "rows " + std::to_string(band.y0) + " to " + std::to_string(band.y1 - 1) +
-                        " shaded by rays: " + std::to_string(counters.traced.rays()) + " rays, " +
+  Step step("rays", std::move(title) + ": " + std::to_string(counters.traced.rays()) + " rays, " +
                         std::to_string(counters.traced.intersections.tests) +
                         " intersection tests");
   step.values = {{"primary_rays_from_item_buffer", count(kFromItemBuffer)},
@@ -37,20 +42,41 @@ Step raysStep(const PixelRect& band, const HybridCounters& counters,
                  {"pixels_spawning_reflection_or_refraction", count(kMirrorOrGlass)},
                  {"intersection_tests", static_cast<double>(counters.traced.intersections.tests)}};
   StepTable fallbacks{"pixels that fell back", {"x", "y", "side of the outline"}, {}};
-  for (int y = band.y0; y < band.y1; ++y) {
-    for (int x = band.x0; x < band.x1; ++x) {
-      const RayPassPixel pixel = pixelAt(x, y);
-      const Vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
-      if (pixel.mirrorOrGlass) step.shapes.push_back({StepShape::Kind::Point, "rays", {centre}});
-      if (pixel.verdict == Verdict::FromItemBuffer) continue;
-      step.shapes.push_back({StepShape::Kind::Point, "fallback", {centre}});
-      fallbacks.rows.push_back({static_cast<double>(x), static_cast<double>(y),
-                                pixel.verdict == Verdict::Outside ? "outside" : "inside"});
-    }
-  }
+  forEachPixel([&](int x, int y) {
+    const RayPassPixel pixel = pixelAt(x, y);
+    const Vec2 centre(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f);
+    if (pixel.mirrorOrGlass) step.shapes.push_back({StepShape::Kind::Point, "rays", {centre}});
+    if (pixel.verdict == Verdict::FromItemBuffer) return;
+    step.shapes.push_back({StepShape::Kind::Point, "fallback", {centre}});
+    fallbacks.rows.push_back({static_cast<double>(x), static_cast<double>(y),
+                              pixel.verdict == Verdict::Outside ? "outside" : "inside"});
+  });
   step.tables.push_back(std::move(fallbacks));
+  return step;
+}
+
+}  // namespace
+
+Step raysStep(const PixelRect& band, const HybridCounters& counters,
+              const std::function<RayPassPixel(int, int)>& pixelAt) {
+  Step step = passTwoStep(
+      "rows " + std::to_string(band.y0) + " to " + std::to_string(band.y1 - 1) + " shaded by rays",
+      counters, pixelAt, [&](const auto& visit) {
+        for (int y = band.y0; y < band.y1; ++y)
+          for (int x = band.x0; x < band.x1; ++x) visit(x, y);
+      });
   step.settled.push_back(band);
   return step;
+}
+
+Step shadedAgainStep(std::span<const glm::ivec2> pixels, const HybridCounters& counters,
+                     const std::function<RayPassPixel(int, int)>& pixelAt) {
+  return passTwoStep(std::to_string(pixels.size()) +
+                         " pixels an outline reached after their rows, shaded again by full "
+                         "primary rays",
+                     counters, pixelAt, [&](const auto& visit) {
+                       for (const glm::ivec2& pixel : pixels) visit(pixel.x, pixel.y);
+                     });
 }
 
 }  // namespace rise

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <span>
 
 #include "ray/trace_counters.hpp"
 #include "render/renderer.hpp"
@@ -59,5 +60,11 @@ struct RayPassPixel {
 // marked, as `pixelAt(x, y)` tells of each.
 Step raysStep(const PixelRect& band, const HybridCounters& counters,
               const std::function<RayPassPixel(int, int)>& pixelAt);
+
+// The pixels that an outline, followed once every row was shaded, reached
+// and made fall back, shaded again: its counters, the pixels marked as in
+// raysStep. It settles nothing: their bands did.
+Step shadedAgainStep(std::span<const glm::ivec2> pixels, const HybridCounters& counters,
+                     const std::function<RayPassPixel(int, int)>& pixelAt);
 
 }  // namespace rise
