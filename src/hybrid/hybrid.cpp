@@ -214,9 +214,11 @@ class HybridGroup {
     std::vector<Stats> stats(passes_.size());
     fillItemBuffers(stats, counters);
     const auto start = std::chrono::steady_clock::now();
-    BandWork work = inBands<BandWork>(
-        [&](int y, int x0, int x1, BandWork& band) { findAndShadeRow(y, x0, x1, band); },
-        [&](const PixelRect& band, int task, const BandWork& bandWork) {
+    const std::vector<PixelRect> bands = makeBands(settings_.width, settings_.height);
+    BandWork work = workers_.sumOverTasks<BandWork>(
+        static_cast<int>(bands.size()), [&](int task, BandWork& bandWork) {
+          const PixelRect& band = bands[static_cast<std::size_t>(task)];
+          shadeBand(band, bandWork);
           const GroupPass& first = passes_.front();
           if (first.recording.steps)
             first.recording.steps->record(
@@ -299,19 +301,6 @@ class HybridGroup {
   // image it shows.
   void showShaded(const GroupPass& pass, int x, int y) {
     if (&pass == &passes_.front()) observer_.onPixelsDone({x, y, x + 1, y + 1}, pass.images.image);
-  }
-
-  // Calls visitRow(y, x0, x1, part) for every row of every band, band by
-  // band on the workers, each band with a part of its own, then done(band,
-  // its number, part); returns the parts summed in order.
-  template <typename Part, typename VisitRow, typename Done>
-  Part inBands(const VisitRow& visitRow, const Done& done) {
-    const std::vector<PixelRect> bands = makeBands(settings_.width, settings_.height);
-    return workers_.sumOverTasks<Part>(static_cast<int>(bands.size()), [&](int task, Part& part) {
-      const PixelRect& band = bands[static_cast<std::size_t>(task)];
-      for (int y = band.y0; y < band.y1; ++y) visitRow(y, band.x0, band.x1, part);
-      done(band, task, part);
-    });
   }
 
   template <typename Visit>
@@ -468,26 +457,38 @@ class HybridGroup {
     }
   }
 
-  // A row's pixels, a run of neighbours at a time: each pixel's first hit
-  // found in each pass of the group, then the run shaded. The pixels whose
-  // first hits the item buffer gave are shaded as a batch
-  // (first_hit_batch.hpp), their shadow rays traced together: each pixel's
-  // samples one after another, so that a packet's rays leave from one pixel,
-  // or two, towards one light, and meet nearly the same boxes. The others,
-  // are shaded whole at once; the pixel whose ray tree is recorded, last.
-  void findAndShadeRow(int y, int x0, int x1, BandWork& work) {
-    constexpr int kRun = 64;
-    work.passes.resize(passes_.size());
-    FirstHitBatch batch(context_);
+  // What the rows of a band reuse, rather than make again for each.
+  struct RowScratch {
+    explicit RowScratch(const TracingContext& context) : batch(context) {}
+
+    FirstHitBatch batch;
     struct Batched {
       std::size_t pass;
       int x;
     };
     std::vector<Batched> batched;  // where each of the batch's hits is from
+  };
+
+  void shadeBand(const PixelRect& band, BandWork& work) {
+    work.passes.resize(passes_.size());
+    RowScratch scratch(context_);
+    for (int y = band.y0; y < band.y1; ++y) findAndShadeRow(y, band.x0, band.x1, scratch, work);
+  }
+
+  // A row's pixels, a run of neighbours at a time: each pixel's first hit
+  // found in each pass of the group, then the run shaded. The pixels whose
+  // first hits the item buffer gave are shaded as a batch
+  // (first_hit_batch.hpp), their shadow rays traced together: each pixel's
+  // samples one after another, so that a packet's rays leave from one pixel,
+  // or two, towards one light, and meet nearly the same boxes. The others are
+  // shaded whole at once; the pixel whose ray tree is recorded, last.
+  void findAndShadeRow(int y, int x0, int x1, RowScratch& scratch, BandWork& work) {
+    constexpr int kRun = 64;
+    FirstHitBatch& batch = scratch.batch;
     SingleRayChoices whitted;
     for (int start = x0; start < x1; start += kRun) {
       batch.clear();
-      batched.clear();
+      scratch.batched.clear();
       for (int x = start; x < std::min(x1, start + kRun); ++x) {
         for (std::size_t i = 0; i < passes_.size(); ++i) {
           GroupPass& pass = passes_[i];
@@ -502,15 +503,16 @@ class HybridGroup {
             continue;
           }
           ++counters.counts[kFromItemBuffer];
-          batched.push_back({i, x});
+          scratch.batched.push_back({i, x});
           batch.add(found.ray, found.hit, whitted, counters.traced);
         }
       }
       batch.traceShadowRays();
       for (std::size_t i = 0; i < batch.size(); ++i) {
-        GroupPass& pass = passes_[batched[i].pass];
-        const int x = batched[i].x;
-        HybridCounters& counters = work.passes[batched[i].pass].counters;
+        const RowScratch::Batched& from = scratch.batched[i];
+        GroupPass& pass = passes_[from.pass];
+        const int x = from.x;
+        HybridCounters& counters = work.passes[from.pass].counters;
         const IntersectionCounters shadowRayCosts = batch.shadowRayCosts(i);
         counters.traced.intersections += shadowRayCosts;
         addCost(pass, x, y, shadowRayCosts.tests);
