@@ -22,12 +22,12 @@
 //     (ray_tracing.cpp): shadow rays, and reflection and refraction rays
 //     where the material has them, through the whole acceleration structure.
 //     A pixel where the item buffer shows nothing takes the background, and
-//     no ray at all. All of a row's first hits being known before any is
-//     shaded, a run of neighbours is shaded as a batch whose shadow rays go
-//     through the structure together, a packet towards each light
-//     (first_hit_batch.hpp): the same rays and colours as one pixel at a
-//     time, at less cost. Whitted's recursion, one ray after another, cannot
-//     gather them so.
+//     no ray at all. The first hits of a run of a row's pixels being known
+//     before any of them is shaded, the run is shaded as a batch whose
+//     shadow rays go through the structure together, a packet towards each
+//     light (first_hit_batch.hpp): the same rays and colours as one pixel at
+//     a time, at less cost. Whitted's recursion, one ray after another,
+//     cannot gather them so.
 //
 // Silhouettes. Polygons are not the exact surfaces: a curved object's lie
 // inside its true outline, and at any edge rounding may put a pixel centre on
@@ -380,12 +380,11 @@ class HybridGroup {
   // Pass 2 begins at each pixel: its ray against its own item's exact
   // surface, then against each other item seen beside it; those that cover
   // it nearer make it fall back, and are the seeds of followOutlines.
-  FoundHit findHit(GroupPass& pass, int x, int y, PassWork& work) {
+  FoundHit findHit(GroupPass& pass, int x, int y, const Ray& ray, PassWork& work) {
     const ItemBuffer& items = *pass.items;
     const int face = items.faceAt(x, y);
     const Item own = items.itemOf(face);
     if (pass.images.cost) pass.images.cost->at(x, y) = Color(0.0f);
-    const Ray ray = rayAt(pass, x, y);
     const FoundHit found{ray, ownHit(pass, x, y, ray, work.counters)};
     work.coveredPixels += own.shape >= 0 ? 1 : 0;
     if (pass.images.face) pass.images.face->at(x, y) = Color(static_cast<float>(face));
@@ -467,6 +466,7 @@ class HybridGroup {
       int x;
     };
     std::vector<Batched> batched;  // where each of the batch's hits is from
+    std::vector<Ray> rays;         // a run's primary rays, each pixel's passes in turn
   };
 
   void shadeBand(const PixelRect& band, BandWork& work) {
@@ -475,8 +475,11 @@ class HybridGroup {
     for (int y = band.y0; y < band.y1; ++y) findAndShadeRow(y, band.x0, band.x1, scratch, work);
   }
 
-  // A row's pixels, a run of neighbours at a time: each pixel's first hit
-  // found in each pass of the group, then the run shaded. The pixels whose
+  // A row's pixels, a run of neighbours at a time: the run's primary rays
+  // made first, in a loop of their own, so that the square roots and
+  // divisions of one ray's direction do not wait for the last one's shading;
+  // then each pixel's first hit found in each pass of the group, and the run
+  // shaded. The pixels whose
   // first hits the item buffer gave are shaded as a batch
   // (first_hit_batch.hpp), their shadow rays traced together: each pixel's
   // samples one after another, so that a packet's rays leave from one pixel,
@@ -489,11 +492,16 @@ class HybridGroup {
     for (int start = x0; start < x1; start += kRun) {
       batch.clear();
       scratch.batched.clear();
-      for (int x = start; x < std::min(x1, start + kRun); ++x) {
-        for (std::size_t i = 0; i < passes_.size(); ++i) {
+      const int end = std::min(x1, start + kRun);
+      scratch.rays.clear();
+      for (int x = start; x < end; ++x)
+        for (const GroupPass& pass : passes_) scratch.rays.push_back(rayAt(pass, x, y));
+      auto ray = scratch.rays.cbegin();
+      for (int x = start; x < end; ++x) {
+        for (std::size_t i = 0; i < passes_.size(); ++i, ++ray) {
           GroupPass& pass = passes_[i];
           HybridCounters& counters = work.passes[i].counters;
-          const FoundHit found = findHit(pass, x, y, work.passes[i]);
+          const FoundHit found = findHit(pass, x, y, *ray, work.passes[i]);
           if (isTreePixel(pass, x, y)) {
             work.passes[i].treePixels.push_back({x, y, found});
             continue;
