@@ -9,9 +9,9 @@
 // answers that question for every pixel at once, far more cheaply than a
 // search of every object, and rays are then spent where the scanline cannot
 // answer: shadows, mirrors, glass. (A BVH whose primary rays go down it in
-// packets finds the first hits for less than the scanline pass and the item
-// tests do: bench/README.md. The hybrid's lead, where it has one, is in its
-// shading, below.)
+// packets finds the first hits for about as little as the scanline pass and
+// the item tests do, less on a million triangles or with many samples a
+// pixel: bench/README.md. The hybrid's lead is mostly in its shading, below.)
 //   Pass 1, visibility by scanline: the scanline algorithm (scanline.cpp),
 //     sampling pixel centres where the primary rays pass, fills an item
 //     buffer: the polygon seen at each pixel, and so the object under it and,
@@ -214,19 +214,7 @@ class HybridGroup {
     std::vector<Stats> stats(passes_.size());
     fillItemBuffers(stats, counters);
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<PixelRect> bands = makeBands(settings_.width, settings_.height);
-    BandWork work = workers_.sumOverTasks<BandWork>(
-        static_cast<int>(bands.size()), [&](int task, BandWork& bandWork) {
-          const PixelRect& band = bands[static_cast<std::size_t>(task)];
-          shadeBand(band, bandWork);
-          const GroupPass& first = passes_.front();
-          if (first.recording.steps)
-            first.recording.steps->record(
-                raysStep(band, bandWork.passes.front().counters,
-                         [&](int x, int y) { return shownOf(first, x, y); }),
-                settings_.height + task);
-          observer_.onPixelsDone(band, first.images.image);
-        });
+    BandWork work = shadeInBands();
     work.passes.resize(passes_.size());
     for (std::size_t i = 0; i < passes_.size(); ++i) {
       PassWork& passWork = work.passes[i];
@@ -468,6 +456,23 @@ class HybridGroup {
     std::vector<Batched> batched;  // where each of the batch's hits is from
     std::vector<Ray> rays;         // a run's primary rays, each pixel's passes in turn
   };
+
+  // Pass 2 but the outlines, band by band on the workers, each band's step
+  // recorded and its pixels shown as soon as it is done.
+  BandWork shadeInBands() {
+    const std::vector<PixelRect> bands = makeBands(settings_.width, settings_.height);
+    return workers_.sumOverTasks<BandWork>(static_cast<int>(bands.size()), [&](int task,
+                                                                               BandWork& work) {
+      const PixelRect& band = bands[static_cast<std::size_t>(task)];
+      shadeBand(band, work);
+      const GroupPass& first = passes_.front();
+      if (first.recording.steps)
+        first.recording.steps->record(raysStep(band, work.passes.front().counters,
+                                               [&](int x, int y) { return shownOf(first, x, y); }),
+                                      settings_.height + task);
+      observer_.onPixelsDone(band, first.images.image);
+    });
+  }
 
   void shadeBand(const PixelRect& band, BandWork& work) {
     work.passes.resize(passes_.size());
