@@ -142,7 +142,8 @@ struct PassRecording {
 // pixels later, and never written to memory of the image's size.
 struct FoundHit {
   Ray ray;
-  Hit hit;  // on the item's exact surface: its shape none where the item buffer shows nothing
+  Item item;  // the item buffer's
+  Hit hit;    // on the item's exact surface: its shape none where the item buffer shows nothing
 };
 
 // What pass 2 settled of each pixel of a pass, for the pass's steps and for
@@ -346,12 +347,20 @@ class HybridGroup {
 
   // The pixel's ray against its own item's exact surface: the hit, or none
   // (its shape none) where the item buffer shows nothing or the ray misses.
-  Hit ownHit(GroupPass& pass, int x, int y, const Ray& ray, HybridCounters& counters) {
-    const Item own = itemAt(pass, x, y);
-    Hit hit;
-    if (own.shape >= 0 && intersect(own, pass, x, y, ray, hit, counters))
-      hit.shape = shapeNumbered(own.shape);
-    return hit;
+  FoundHit ownHit(GroupPass& pass, int x, int y, const Item& own, const Ray& ray,
+                  HybridCounters& counters) {
+    FoundHit found{ray, own, {}};
+    if (own.shape >= 0 && intersect(own, pass, x, y, ray, found.hit, counters))
+      found.hit.shape = shapeNumbered(own.shape);
+    return found;
+  }
+
+  // Marks the pixel as falling back inside an outline, unless it already
+  // falls back; whether it did not.
+  static bool fallBack(Settled& settled) {
+    if (settled.verdict != Verdict::FromItemBuffer) return false;
+    settled.verdict = Verdict::Inside;
+    return true;
   }
 
   // Whether `item` meets the pixel's ray before the pixel's own item does,
@@ -361,8 +370,7 @@ class HybridGroup {
                     HybridCounters& counters) {
     Hit hit;
     if (!intersect(item, pass, x, y, own.ray, hit, counters)) return false;
-    const Item ownItem = itemAt(pass, x, y);
-    return std::tie(hit.t, item) < std::tie(own.hit.t, ownItem);
+    return std::tie(hit.t, item) < std::tie(own.hit.t, own.item);
   }
 
   // Pass 2 begins at each pixel: its ray against its own item's exact
@@ -373,7 +381,7 @@ class HybridGroup {
     const int face = items.faceAt(x, y);
     const Item own = items.itemOf(face);
     if (pass.images.cost) pass.images.cost->at(x, y) = Color(0.0f);
-    const FoundHit found{ray, ownHit(pass, x, y, ray, work.counters)};
+    const FoundHit found = ownHit(pass, x, y, own, ray, work.counters);
     work.coveredPixels += own.shape >= 0 ? 1 : 0;
     if (pass.images.face) pass.images.face->at(x, y) = Color(static_cast<float>(face));
     Settled& settled = settledAt(pass, x, y);
@@ -388,7 +396,7 @@ class HybridGroup {
       if (item == own || std::find(tested.begin(), end, item) != end) return;
       tested[static_cast<std::size_t>(count++)] = item;
       if (!coversNearer(item, pass, x, y, found, work.counters)) return;
-      if (settled.verdict == Verdict::FromItemBuffer) settled.verdict = Verdict::Inside;
+      fallBack(settled);
       work.seeds.push_back({x, y, item});
     });
     return found;
@@ -411,14 +419,12 @@ class HybridGroup {
       pending.pop_front();
       forEachNeighbour(seed.x, seed.y, [&](int x, int y) {
         if (itemAt(pass, x, y) == seed.item || !tested.insert({x, y, seed.item}).second) return;
-        const Ray ray = rayAt(pass, x, y);
-        const FoundHit found{ray, ownHit(pass, x, y, ray, outlines)};
+        const FoundHit found = ownHit(pass, x, y, itemAt(pass, x, y), rayAt(pass, x, y), outlines);
         if (!coversNearer(seed.item, pass, x, y, found, outlines)) return;
         pending.push_back({x, y, seed.item});
         Settled& settled = settledAt(pass, x, y);
-        if (settled.verdict != Verdict::FromItemBuffer) return;
-        settled.verdict = Verdict::Inside;
-        if (isTreePixel(pass, x, y)) return;  // not shaded yet
+        // Already falling back, or the tree pixel, not shaded yet.
+        if (!fallBack(settled) || isTreePixel(pass, x, y)) return;
         HybridCounters& counted = work.counters;
         --counted.counts[kFromItemBuffer];
         counted.counts[kSpawning] -= settled.spawnedRays;
