@@ -515,6 +515,7 @@ class HybridGroup {
           const FoundHit found = findHit(pass, x, y, *ray, work.passes[i]);
           if (isTreePixel(pass, x, y)) {
             work.passes[i].treePixels.push_back({x, y, found});
+            pass.images.image.at(x, y) = Color(0.0f);  // shown black, not unwritten, till shaded
             continue;
           }
           if (!shadedInBatch(pass, found, x, y)) {
