@@ -373,9 +373,22 @@ class HybridGroup {
     return std::tie(hit.t, item) < std::tie(own.hit.t, own.item);
   }
 
+  // The faces the item buffer shows at the pixel's four neighbours (left,
+  // right, above, below), its own face where a neighbour is off the image.
+  // Read without a branch for each, which an edge running through a row
+  // would mispredict.
+  std::array<int, 4> facesBeside(const ItemBuffer& items, int x, int y, int face) const {
+    return {x > 0 ? items.faceAt(x - 1, y) : face,
+            x + 1 < settings_.width ? items.faceAt(x + 1, y) : face,
+            y > 0 ? items.faceAt(x, y - 1) : face,
+            y + 1 < settings_.height ? items.faceAt(x, y + 1) : face};
+  }
+
   // Pass 2 begins at each pixel: its ray against its own item's exact
   // surface, then against each other item seen beside it; those that cover
-  // it nearer make it fall back, and are the seeds of followOutlines.
+  // it nearer make it fall back, and are the seeds of followOutlines. Inside
+  // a polygon, as most pixels are, every neighbour shows the pixel's own
+  // face and there is no other item to test.
   FoundHit findHit(GroupPass& pass, int x, int y, const Ray& ray, PassWork& work) {
     const ItemBuffer& items = *pass.items;
     const int face = items.faceAt(x, y);
@@ -386,19 +399,20 @@ class HybridGroup {
     if (pass.images.face) pass.images.face->at(x, y) = Color(static_cast<float>(face));
     Settled& settled = settledAt(pass, x, y);
     settled = {own.shape >= 0 && !found.hit.shape ? Verdict::Outside : Verdict::FromItemBuffer};
+    const std::array<int, 4> beside = facesBeside(items, x, y, face);
+    if (std::ranges::count(beside, face) == 4) return found;
     std::array<Item, 4> tested;
     int count = 0;
-    forEachNeighbour(x, y, [&](int nx, int ny) {
-      const int besideFace = items.faceAt(nx, ny);
-      if (besideFace == face || besideFace < 0) return;
+    for (const int besideFace : beside) {
+      if (besideFace == face || besideFace < 0) continue;
       const Item item = items.itemOf(besideFace);
       const auto end = tested.begin() + count;
-      if (item == own || std::find(tested.begin(), end, item) != end) return;
+      if (item == own || std::find(tested.begin(), end, item) != end) continue;
       tested[static_cast<std::size_t>(count++)] = item;
-      if (!coversNearer(item, pass, x, y, found, work.counters)) return;
+      if (!coversNearer(item, pass, x, y, found, work.counters)) continue;
       fallBack(settled);
       work.seeds.push_back({x, y, item});
-    });
+    }
     return found;
   }
 

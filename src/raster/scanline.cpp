@@ -92,6 +92,7 @@ class BandSweep {
       : screen_(screen),
         band_(band),
         faces_(faces),
+        width_(faces.width()),
         blending_(blending),
         counters_(counters),
         edges_(screen, band, polygons, counters.edgeList),
@@ -128,7 +129,7 @@ class BandSweep {
   template <typename Visit>
   void forEachCentre(int y, int face, float left, float right, const Visit& visit) {
     const ScreenFace& screenFace = screen_.faces[face];
-    const auto [x0, x1] = centresOfSpan(left, right, faces_.width());
+    const auto [x0, x1] = centresOfSpan(left, right, width_);
     const float centreY = static_cast<float>(y) + 0.5f;
     for (int x = x0; x < x1; ++x) {
       ++counters_.depthTests;
@@ -158,7 +159,7 @@ class BandSweep {
 
   void emitScanline(int y) {
     counters_.layersMax = std::max<std::uint64_t>(counters_.layersMax, lineLayers_.held());
-    for (int x = 0; x < faces_.width(); ++x) {
+    for (int x = 0; x < width_; ++x) {
       if (blending_ && lineLayers_.holdsAny(x)) {
         counters_.blends += lineLayers_.show(*blending_, x, y, lineFace_[x], lineInverseDepth_[x]);
       } else if (lineFace_[x] >= 0) {
@@ -206,16 +207,16 @@ class BandSweep {
     if (StepTable layers = lineLayers(); !layers.rows.empty())
       step.tables.push_back(std::move(layers));
     if (shadowCount_) step.tables.push_back(shadowCount_->countsTable());
-    step.settled.push_back({0, y, faces_.width(), y + 1});
+    step.settled.push_back({0, y, width_, y + 1});
     return step;
   }
 
   // The scanline's depth and face buffers, as runs of one face.
   StepTable lineBuffers() const {
     StepTable runs{"depth and face buffers", {"from x", "to x", "face", "w at first"}, {}};
-    for (int x = 0; x < faces_.width();) {
+    for (int x = 0; x < width_;) {
       int end = x + 1;
-      while (end < faces_.width() && lineFace_[end] == lineFace_[x]) ++end;
+      while (end < width_ && lineFace_[end] == lineFace_[x]) ++end;
       const int face = lineFace_[x] < 0 ? -1 : sceneFaceOf(lineFace_[x]);
       runs.rows.push_back({static_cast<double>(x), static_cast<double>(end - 1),
                            static_cast<double>(face), lineInverseDepth_[x]});
@@ -240,10 +241,10 @@ class BandSweep {
       return std::pair(blended, dropped);
     };
     if (!blending_) return runs;
-    for (int x = 0; x < faces_.width();) {
+    for (int x = 0; x < width_;) {
       const auto layers = layersAt(x);
       int end = x + 1;
-      while (end < faces_.width() && layersAt(end) == layers) ++end;
+      while (end < width_ && layersAt(end) == layers) ++end;
       if (lineLayers_.holdsAny(x))
         runs.rows.push_back(
             {static_cast<double>(x), static_cast<double>(end - 1), layers.first, layers.second});
@@ -258,6 +259,7 @@ class BandSweep {
   const ScreenGeometry& screen_;
   const PixelRect& band_;
   VisibleFaces& faces_;
+  const int width_;  // the faces', asked once rather than at every pixel
   RasterFrame* blending_;
   ScanlineCounters& counters_;
   ActiveEdgeList edges_;
