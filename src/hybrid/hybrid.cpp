@@ -292,12 +292,19 @@ class HybridGroup {
     if (&pass == &passes_.front()) observer_.onPixelsDone({x, y, x + 1, y + 1}, pass.images.image);
   }
 
+  // A pixel's neighbours, in the order they are tested: left, right, above,
+  // below.
+  static constexpr std::array<glm::ivec2, 4> kNeighbours{{{-1, 0}, {1, 0}, {0, -1}, {0, 1}}};
+
+  bool onImage(glm::ivec2 pixel) const {
+    return pixel.x >= 0 && pixel.x < settings_.width && pixel.y >= 0 && pixel.y < settings_.height;
+  }
+
   template <typename Visit>
   void forEachNeighbour(int x, int y, const Visit& visit) const {
-    if (x > 0) visit(x - 1, y);
-    if (x + 1 < settings_.width) visit(x + 1, y);
-    if (y > 0) visit(x, y - 1);
-    if (y + 1 < settings_.height) visit(x, y + 1);
+    for (const glm::ivec2 step : kNeighbours)
+      if (const glm::ivec2 beside{x + step.x, y + step.y}; onImage(beside))
+        visit(beside.x, beside.y);
   }
 
   // The primary ray of the pixel in the pass: through its sample position,
@@ -373,15 +380,16 @@ class HybridGroup {
     return std::tie(hit.t, item) < std::tie(own.hit.t, own.item);
   }
 
-  // The faces the item buffer shows at the pixel's four neighbours (left,
-  // right, above, below), its own face where a neighbour is off the image.
-  // Read without a branch for each, which an edge running through a row
-  // would mispredict.
+  // The faces the item buffer shows at the pixel's four neighbours, its own
+  // face where a neighbour is off the image. Read without a branch for each,
+  // which an edge running through a row would mispredict.
   std::array<int, 4> facesBeside(const ItemBuffer& items, int x, int y, int face) const {
-    return {x > 0 ? items.faceAt(x - 1, y) : face,
-            x + 1 < settings_.width ? items.faceAt(x + 1, y) : face,
-            y > 0 ? items.faceAt(x, y - 1) : face,
-            y + 1 < settings_.height ? items.faceAt(x, y + 1) : face};
+    std::array<int, 4> faces{};
+    for (std::size_t i = 0; i < kNeighbours.size(); ++i) {
+      const glm::ivec2 beside{x + kNeighbours[i].x, y + kNeighbours[i].y};
+      faces[i] = onImage(beside) ? items.faceAt(beside.x, beside.y) : face;
+    }
+    return faces;
   }
 
   // Pass 2 begins at each pixel: its ray against its own item's exact
