@@ -37,8 +37,10 @@ namespace {
 
 // Whether each directed edge a -> b between the vertices `vertexOf` maps the
 // corners to occurs once, and its reverse b -> a once too. The edges leaving
-// each vertex are gathered in one array (counting sort), so that the reverse
-// of an edge is looked for among the few edges leaving its end.
+// each vertex are gathered in one array (counting sort) and sorted by their
+// ends, so that a twin of an edge is next to it and its reverse is found by
+// binary search among the edges leaving its end: however many edges meet at a
+// vertex, the time grows with their number and not with its square.
 bool edgesPairUp(std::span<const std::array<int, 3>> triangles,
                  const std::vector<std::uint32_t>& vertexOf) {
   std::vector<std::uint32_t> firstEdge(vertexOf.size() + 1, 0);
@@ -52,16 +54,16 @@ bool edgesPairUp(std::span<const std::array<int, 3>> triangles,
       edgeEnd[filled[vertexOf[triangle[corner]]]++] = vertexOf[triangle[(corner + 1) % 3]];
 
   const auto leaving = [&](std::uint32_t vertex) {
-    return std::span<const std::uint32_t>(edgeEnd.data() + firstEdge[vertex],
-                                          firstEdge[vertex + 1] - firstEdge[vertex]);
+    return std::span<std::uint32_t>(edgeEnd.data() + firstEdge[vertex],
+                                    firstEdge[vertex + 1] - firstEdge[vertex]);
   };
+  for (std::uint32_t from = 0; from + 1 < firstEdge.size(); ++from)
+    std::ranges::sort(leaving(from));
   for (std::uint32_t from = 0; from + 1 < firstEdge.size(); ++from) {
     const std::span<const std::uint32_t> ends = leaving(from);
-    for (std::size_t i = 0; i < ends.size(); ++i) {
-      if (std::count(ends.begin(), ends.end(), ends[i]) != 1) return false;
-      const std::span<const std::uint32_t> back = leaving(ends[i]);
-      if (std::count(back.begin(), back.end(), from) != 1) return false;
-    }
+    if (std::ranges::adjacent_find(ends) != ends.end()) return false;
+    for (std::uint32_t end : ends)
+      if (!std::ranges::binary_search(leaving(end), from)) return false;
   }
   return true;
 }

@@ -198,6 +198,32 @@ TEST(Tessellation, KnowsWhichMeshesCloseAroundASolid) {
   expectUnitNormals(tessellate(TriangleMesh(corners, tetrahedron, 0)));
 }
 
+// Two cones base to base (a bipyramid) of `slices` sides: a closed solid in
+// which each apex has `slices` edges.
+std::pair<std::vector<Vec3>, std::vector<std::array<int, 3>>> bipyramid(int slices) {
+  std::vector<Vec3> corners = {Vec3(0.0f, 0.0f, 1.0f), Vec3(0.0f, 0.0f, -1.0f)};
+  std::vector<std::array<int, 3>> triangles;
+  for (int i = 0; i < slices; ++i) {
+    const float angle = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(slices);
+    corners.emplace_back(std::cos(angle), std::sin(angle), 0.0f);
+    const int here = 2 + i;
+    const int next = 2 + (i + 1) % slices;
+    triangles.push_back({0, here, next});
+    triangles.push_back({1, next, here});
+  }
+  return {corners, triangles};
+}
+
+TEST(Tessellation, KnowsASolidWhoseVerticesHaveThousandsOfEdges) {
+  auto [corners, triangles] = bipyramid(5000);
+  EXPECT_TRUE(enclosesSolid(corners, triangles));
+  std::swap(triangles[7000][1], triangles[7000][2]);
+  EXPECT_FALSE(enclosesSolid(corners, triangles)) << "one triangle turned the other way";
+  std::swap(triangles[7000][1], triangles[7000][2]);
+  triangles.push_back(triangles[123]);
+  EXPECT_FALSE(enclosesSolid(corners, triangles)) << "one triangle twice";
+}
+
 // A grid of squares over the unit square, each cut in two, bent, with normals
 // and texture coordinates at its vertices or not.
 MeshGeometry grid(int side, bool withAttributes) {

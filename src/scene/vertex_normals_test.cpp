@@ -83,5 +83,53 @@ TEST(VertexNormals, ATriangleWithoutAreaGetsNoNormal) {
   EXPECT_EQ(sliver.normals[0], Vec3(0.0f));
 }
 
+// A cone of `slices` sides around the z axis, its apex at (0, 0, 1) shared by
+// all its sides, and how high it is against its radius of 1.
+MeshGeometry cone(int slices, float height) {
+  MeshGeometry mesh;
+  mesh.positions.push_back(Vec3(0.0f, 0.0f, height));
+  for (int i = 0; i < slices; ++i) {
+    const float angle = 2.0f * kPi * static_cast<float>(i) / static_cast<float>(slices);
+    mesh.positions.push_back(Vec3(std::cos(angle), std::sin(angle), 0.0f));
+    mesh.triangles.push_back({0, 1 + i, 1 + (i + 1) % slices});
+  }
+  return mesh;
+}
+
+// A steep cone's sides face every way around it: each corner at the apex
+// smooths with the sides within the crease angle of its own and not with
+// those beyond it, however many sides meet there.
+TEST(VertexNormals, EachCornerWhereThousandsOfTrianglesMeetSmoothsWithItsOwnNeighbours) {
+  const MeshGeometry steep = cone(3000, 20.0f);
+  const MeshGeometry smooth = withVertexNormals(steep, 80.0f);
+  std::vector<Vec3> weighted;
+  for (const auto& [a, b, c] : steep.triangles)
+    weighted.push_back(glm::cross(steep.positions[b] - steep.positions[a],
+                                  steep.positions[c] - steep.positions[a]));
+  const float smoothCosine = std::cos(radians(80.0f));
+  for (std::size_t triangle = 0; triangle < steep.triangles.size(); triangle += 97) {
+    Vec3 expected(0.0f);
+    for (const Vec3& other : weighted)
+      if (glm::dot(glm::normalize(weighted[triangle]), glm::normalize(other)) >= smoothCosine)
+        expected += other;
+    const int apex = smooth.triangles[triangle][0];
+    EXPECT_EQ(smooth.positions[apex], steep.positions[0]);
+    EXPECT_TRUE(nearlyEqual(smooth.normals[apex], glm::normalize(expected)))
+        << "the apex's corner of triangle " << triangle;
+  }
+  EXPECT_EQ(smooth.positions.size(), 2u * 3000u) << "the apex once for each side's normal";
+}
+
+TEST(VertexNormals, AFlatFanIsOneNormalAndAPointOfSliversNone) {
+  MeshGeometry fan = cone(3000, 0.0f);
+  MeshGeometry smooth = withVertexNormals(fan, 80.0f);
+  EXPECT_EQ(smooth.positions.size(), fan.positions.size());
+  for (const Vec3& normal : smooth.normals) EXPECT_TRUE(nearlyEqual(normal, {0.0f, 0.0f, 1.0f}));
+  fan.positions.assign(fan.positions.size(), Vec3(1.0f, 2.0f, 3.0f));
+  smooth = withVertexNormals(fan, 80.0f);
+  EXPECT_EQ(smooth.positions.size(), fan.positions.size());
+  for (const Vec3& normal : smooth.normals) EXPECT_EQ(normal, Vec3(0.0f));
+}
+
 }  // namespace
 }  // namespace rise
