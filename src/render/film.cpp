@@ -91,8 +91,15 @@ Film::Film(int width, int height, FilterKind filter)
 void Film::makeSums() {
   if (!weightSum_.empty()) return;
   const auto pixels = static_cast<std::size_t>(width_) * height_;
-  weightedSum_.assign(pixels, Color(0.0f));
-  weightSum_.assign(pixels, 0.0f);
+  if (!kept_) {
+    weightedSum_.assign(pixels, Color(0.0f));
+    weightSum_.assign(pixels, 0.0f);
+    return;
+  }
+  // Each of the kept images added 1 x its sample and 1 to the weight.
+  weightedSum_.assign(kept_->sum.pixels().begin(), kept_->sum.pixels().end());
+  weightSum_.assign(pixels, static_cast<float>(kept_->count));
+  kept_.reset();
 }
 
 int Film::tileMargin() const { return static_cast<int>(std::ceil(filter_.radius() - 0.5f)); }
@@ -124,15 +131,19 @@ void Film::merge(const FilmTile& tile) {
 
 void Film::addImage(Image samples, const Vec2& offset, const Workers& workers) {
   assert(samples.width() == width_ && samples.height() == height_);
-  if (weightSum_.empty() && !kept_ && filter_.keepsEachSampleInItsPixel(offset)) {
-    kept_ = KeptImage{std::move(samples), offset};
+  if (weightSum_.empty() && filter_.keepsEachSampleInItsPixel(offset)) {
+    if (!kept_) {
+      kept_ = KeptImages{std::move(samples), 1};
+      return;
+    }
+    workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
+      for (int y = firstRow; y < endRow; ++y)
+        for (int x = 0; x < width_; ++x) kept_->sum.at(x, y) += samples.at(x, y);
+    });
+    ++kept_->count;
     return;
   }
   makeSums();
-  if (kept_) {
-    gather(kept_->samples, kept_->offset, workers);
-    kept_.reset();
-  }
   gather(samples, offset, workers);
 }
 
@@ -153,7 +164,18 @@ void Film::gather(const Image& samples, const Vec2& offset, const Workers& worke
 }
 
 Image Film::resolve(const Workers& workers) {
-  if (kept_) return std::move(kept_->samples);
+  if (kept_) {
+    Image& sum = kept_->sum;
+    // Divided rather than multiplied by the reciprocal: the same colours as
+    // the weighted sums give.
+    const auto count = static_cast<float>(kept_->count);
+    if (kept_->count > 1)
+      workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
+        for (int y = firstRow; y < endRow; ++y)
+          for (int x = 0; x < width_; ++x) sum.at(x, y) /= count;
+      });
+    return std::move(sum);
+  }
   Image image(width_, height_);
   if (weightSum_.empty()) return image;
   workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {

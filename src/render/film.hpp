@@ -63,9 +63,11 @@ class Film {
   // Adds an image of samples, each taken in its pixel at the same `offset`
   // (a pass of the accumulation buffer): the same sums, in the same order,
   // as adding them one by one in raster order, but gathered pixel by pixel,
-  // so that the workers share the rows. The first image is kept as it is
-  // when the filter keeps each of its samples in its pixel: alone, it is its
-  // own reconstruction.
+  // so that the workers share the rows. While every image's filter keeps
+  // each of its samples in its pixel (the box), the images are summed into
+  // the first, whose pixels then need no weights: each has as many samples
+  // as there are images, of weight 1. Alone, the first is its own
+  // reconstruction.
   void addImage(Image samples, const Vec2& offset, const Workers& workers);
 
   // The weighted average at every pixel, the workers sharing the rows; black
@@ -74,10 +76,11 @@ class Film {
   Image resolve(const Workers& workers);
 
  private:
-  // An image added first, not yet gathered into the sums.
-  struct KeptImage {
-    Image samples;
-    Vec2 offset;
+  // The images added first, while each of them kept its samples in their
+  // pixels: their sum, not yet gathered into the sums.
+  struct KeptImages {
+    Image sum;
+    int count;
   };
 
   // How many pixels beyond its own a sample reaches.
@@ -88,7 +91,7 @@ class Film {
   int width_;
   int height_;
   ReconstructionFilter filter_;
-  std::optional<KeptImage> kept_;
+  std::optional<KeptImages> kept_;
   std::vector<Color> weightedSum_;  // none until needed
   std::vector<float> weightSum_;
 };

@@ -65,13 +65,16 @@ TEST(Film, TentBlendsNeighboursAcrossTiles) {
 // A pass of the accumulation buffer added whole gives the image that its
 // samples added one by one, in raster order, give: bit for bit, with every
 // filter, at offsets on and off the pixels' borders, on any number of threads.
+// The tent keeps the first two passes' samples, at the pixels' centres, in
+// their pixels, and the later ones not.
 TEST(Film, AnImageAddedWholeEqualsItsSamplesAddedOneByOne) {
   const int width = 13, height = 9;
   const auto color = [](int x, int y, int pass) {
     return Color(0.1f * static_cast<float>(x % 5), 0.37f * static_cast<float>(y % 3),
                  0.05f * static_cast<float>(pass + x * y % 7));
   };
-  const std::vector<Vec2> offsets = {{0.5f, 0.5f}, {0.0f, 0.999f}, {0.13f, 0.71f}, {0.9f, 0.2f}};
+  const std::vector<Vec2> offsets = {
+      {0.5f, 0.5f}, {0.5f, 0.5f}, {0.0f, 0.999f}, {0.13f, 0.71f}, {0.9f, 0.2f}};
   for (FilterKind filter : {FilterKind::Box, FilterKind::Tent, FilterKind::Gaussian}) {
     Film oneByOne(width, height, filter);
     FilmTile whole = oneByOne.tileFor({0, 0, width, height});
