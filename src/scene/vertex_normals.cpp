@@ -139,9 +139,12 @@ class CreaseSums {
 
   void addSmoothing(int index, const Vec3& unitNormal, Vec3& sum) const {
     const Box& box = boxes_[index];
+    // The box's corners farthest along the normal and nearest.
     const glm::bvec3 negative = glm::lessThan(unitNormal, Vec3(0.0f));
-    if (glm::dot(unitNormal, glm::mix(box.high, box.low, negative)) < smoothCosine_) return;
-    if (glm::dot(unitNormal, glm::mix(box.low, box.high, negative)) >= smoothCosine_) {
+    const Vec3 farthest = glm::mix(box.high, box.low, negative);
+    const Vec3 nearest = glm::mix(box.low, box.high, negative);
+    if (glm::dot(unitNormal, farthest) < smoothCosine_) return;
+    if (glm::dot(unitNormal, nearest) >= smoothCosine_) {
       sum += box.weightedSum;
     } else if (box.lower < 0) {
       for (int i = box.begin; i < box.end; ++i)
