@@ -23,6 +23,7 @@ class SceneFaces final : public VisibleFaces {
                       face < 0 ? -1 : screen_.faces[static_cast<std::size_t>(face)].sceneFace);
   }
   void addCost(int, int, float) override {}
+  bool keepsCost() const override { return false; }
   StepRecorder* steps() const override { return faces_.steps(); }
 
  private:

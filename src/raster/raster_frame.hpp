@@ -41,6 +41,7 @@ class RasterFrame final : public VisibleFaces {
   void addCost(int x, int y, float work) override {
     if (cost_) cost_->at(x, y) += Color(work);
   }
+  bool keepsCost() const override { return cost_ != nullptr; }
 
   StepRecorder* steps() const override { return steps_; }
   // The shadow volumes the algorithm is to count, or nullptr.

@@ -93,12 +93,13 @@ class BandSweep {
         band_(band),
         faces_(faces),
         width_(faces.width()),
+        keepsCost_(faces.keepsCost()),
         blending_(blending),
         counters_(counters),
         edges_(screen, band, polygons, counters.edgeList),
         lineInverseDepth_(faces.width(), 0.0f),
         lineFace_(faces.width(), -1),
-        lineCost_(faces.width(), 0.0f),
+        lineCost_(keepsCost_ ? faces.width() : 0, 0.0f),
         lineLayers_(blending ? faces.width() : 0) {
     if (ShadowVolumes* volumes = blending ? blending->shadowVolumes() : nullptr)
       shadowCount_.emplace(*volumes, band);
@@ -131,13 +132,13 @@ class BandSweep {
     const ScreenFace& screenFace = screen_.faces[face];
     const auto [x0, x1] = centresOfSpan(left, right, width_);
     const float centreY = static_cast<float>(y) + 0.5f;
-    for (int x = x0; x < x1; ++x) {
-      ++counters_.depthTests;
-      ++lineCost_[x];
+    counters_.depthTests += static_cast<std::uint64_t>(std::max(x1 - x0, 0));
+    if (keepsCost_)
+      for (int x = x0; x < x1; ++x) ++lineCost_[x];
+    for (int x = x0; x < x1; ++x)
       // The face's own affine depth, not one stepped along the span, so
       // that every algorithm compares the very same depths.
       visit(x, screenFace.inverseDepthAt(Vec2(static_cast<float>(x) + 0.5f, centreY)));
-    }
   }
 
   void drawSpan(int y, int face, float left, float right) {
@@ -165,9 +166,15 @@ class BandSweep {
       } else if (lineFace_[x] >= 0) {
         faces_.setVisible(x, y, lineFace_[x]);
       }
-      if (lineCost_[x] > 0.0f) faces_.addCost(x, y, lineCost_[x]);
       lineInverseDepth_[x] = 0.0f;
       lineFace_[x] = -1;
+    }
+    if (keepsCost_) emitCost(y);
+  }
+
+  void emitCost(int y) {
+    for (int x = 0; x < width_; ++x) {
+      if (lineCost_[x] > 0.0f) faces_.addCost(x, y, lineCost_[x]);
       lineCost_[x] = 0.0f;
     }
   }
@@ -259,7 +266,8 @@ class BandSweep {
   const ScreenGeometry& screen_;
   const PixelRect& band_;
   VisibleFaces& faces_;
-  const int width_;  // the faces', asked once rather than at every pixel
+  const int width_;       // the faces', asked once rather than at every pixel
+  const bool keepsCost_;  // whether lineCost_ is counted, and told
   RasterFrame* blending_;
   ScanlineCounters& counters_;
   ActiveEdgeList edges_;

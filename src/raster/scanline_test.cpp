@@ -55,5 +55,29 @@ TEST(Scanline, DrawsEachPixelOfAMeshOnce) {
   EXPECT_EQ(pixelsSeeingOtherFaces(result, render("z-buffer", scene)), 0);
 }
 
+// The "cost" buffer charges each pixel the depth tests made at it: two where
+// a triangle lies over another, one where it lies alone. The tests are
+// counted alike whether the buffer is wanted or not.
+TEST(Scanline, ChargesEachPixelItsDepthTests) {
+  Scene scene = oneTriangle(48, 40);
+  addTriangle(scene, Vec3(-0.6f, -0.8f, -0.5f), Vec3(0.9f, -0.6f, -0.5f), Vec3(0.0f, 0.7f, -0.5f));
+  RenderSettings settings = settingsFor(scene);
+  settings.buffers = std::vector<std::string>{};
+  const double unwantedTests = render("scanline", scene, settings).stats.value("depth_tests");
+  settings.buffers = std::vector<std::string>{"cost"};
+  const RenderResult result = render("scanline", scene, settings);
+  const Image& cost = result.buffers.at("cost");
+  double charged = 0.0;
+  int overlapped = 0;
+  for (int y = 0; y < cost.height(); ++y)
+    for (int x = 0; x < cost.width(); ++x) {
+      charged += cost.at(x, y).r;
+      overlapped += cost.at(x, y).r == 2.0f;
+    }
+  EXPECT_EQ(charged, result.stats.value("depth_tests"));
+  EXPECT_EQ(unwantedTests, result.stats.value("depth_tests"));
+  EXPECT_GT(overlapped, 100);
+}
+
 }  // namespace
 }  // namespace rise

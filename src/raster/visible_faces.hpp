@@ -20,6 +20,9 @@ class VisibleFaces {
   virtual void setVisible(int x, int y, int face) = 0;
   // The algorithm spent `work` more on pixel (x, y), for the "cost" buffer.
   virtual void addCost(int x, int y, float work) = 0;
+  // Whether that work is kept: an algorithm that adds it up before telling
+  // it need not where nobody keeps it.
+  virtual bool keepsCost() const = 0;
   // Where the algorithm reports its steps, or nullptr when nobody listens.
   virtual StepRecorder* steps() const = 0;
 
@@ -41,6 +44,7 @@ class FaceBuffer final : public VisibleFaces {
   int height() const override { return height_; }
   void setVisible(int x, int y, int face) override { faces_[index(x, y)] = face; }
   void addCost(int, int, float) override {}
+  bool keepsCost() const override { return false; }
   StepRecorder* steps() const override { return steps_; }
 
   int at(int x, int y) const { return faces_[index(x, y)]; }
