@@ -22,8 +22,8 @@ class SceneFaces final : public VisibleFaces {
     faces_.setVisible(x, y,
                       face < 0 ? -1 : screen_.faces[static_cast<std::size_t>(face)].sceneFace);
   }
-  void addCost(int, int, float) override {}
-  bool keepsCost() const override { return false; }
+  void addCost(int x, int y, float work) override { faces_.addCost(x, y, work); }
+  bool keepsCost() const override { return faces_.keepsCost(); }
   StepRecorder* steps() const override { return faces_.steps(); }
 
  private:
