@@ -134,6 +134,20 @@ TEST(Hybrid, FollowsAnOutlineFarBeyondCoarsePolygons) {
   EXPECT_GT(stats.value("fallback_pixels_inside_outline"), 200.0);
 }
 
+// With several samples a pixel, the outline's pixels already shaded from the
+// item buffer have their first samples taken back from the image that all
+// the samples of a group of passes share, and the full primary rays' put in.
+TEST(Hybrid, FollowsAnOutlineBeyondCoarsePolygonsInEverySample) {
+  const Scene scene = pinholeExample("classic.yaml", 80, 60);
+  RenderSettings settings = oneSampleAPixel(scene);
+  settings.tessellation = 1;
+  settings.sampling.samples = 9;
+  settings.sampling.pattern = SamplePattern::Regular;
+  expectWhittedsImage(scene, settings);
+  EXPECT_GT(render("hybrid", scene, settings).stats.value("fallback_pixels_inside_outline"),
+            9 * 150.0);
+}
+
 // The counters explain the work: every sample is answered by the item
 // buffer or by a full primary ray, the full ones are the fallback pixels, and
 // a scene without mirrors or glass spawns shadow rays only.

@@ -46,7 +46,8 @@
 // memory the size of the image but what its steps show. The outlines are
 // followed once every row is shaded; the pixels they reach beyond the
 // neighbours of their polygons (few, but a band of them around a coarsely
-// cut sphere) are shaded again, by full primary rays.
+// cut sphere) are shaded again, by full primary rays, their first samples
+// shaded once more as they were and taken back out of the image.
 // Everywhere else the item buffer's answer is the primary ray's, to the bit.
 // (A sliver of an exact surface narrower than a pixel, where none of its
 // polygons is seen nearby, escapes the rule: a few pixels at most.)
@@ -60,7 +61,9 @@
 // the same packets. A pixel's samples are nearly the same rays: the later
 // ones find in the cache the boxes of the structure and the surface the
 // first one fetched, as the samples of Whitted's pixel, traced one after
-// another, do.
+// another, do. Where the film keeps each sample in its pixel (the box
+// filter), the group's samples go into one image of their means, not one
+// image a pass: a group's passes take the image memory of one.
 //
 // Its steps, for a student: the item buffer filling, a scanline a step, the
 // items in their materials' colours; then each band of pixels shaded, with
@@ -115,13 +118,14 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// An image of the size and the buffers the settings want: the "cost" buffer
-// and, with `whatWasHit`, those of what the primary rays hit, which the
+// The buffers the settings want, of the image's size: the "cost" buffer and,
+// with `whatWasHit`, those of what the primary rays hit, which the
 // accumulation keeps of its first pass alone (visible_surface_renderer.hpp).
 // All are left unfilled: pass 2 writes every pixel of each, on the workers.
+// The image itself is the film's (SampleImage).
 RenderResult blankResult(const RenderSettings& settings, bool whatWasHit) {
   const auto unfilled = [&] { return Image::unfilled(settings.width, settings.height); };
-  RenderResult result{unfilled(), {}, {}};
+  RenderResult result;
   if (settings.wantsBuffer("cost")) result.buffers.emplace("cost", unfilled());
   if (whatWasHit)
     for (const char* name : {"depth", "normal", "face"})
@@ -148,23 +152,35 @@ struct FoundHit {
 
 // What pass 2 settled of each pixel of a pass, for the pass's steps and for
 // an outline found after the pixel was shaded, which must know what it takes
-// back. Left unfilled: the workers write each pixel's, so that its memory is
-// first touched on all of them and not on one.
+// back: a byte a pixel. Left unfilled: the workers write each pixel's, so
+// that its memory is first touched on all of them and not on one.
 struct Settled {
-  Verdict verdict = Verdict::FromItemBuffer;
-  bool mirrorOrGlass = false;  // its shading spawned reflected or refracted rays
-  bool spawnedRays = false;    // ... or any rays
+  Verdict verdict : 2 = Verdict::FromItemBuffer;
+  bool mirrorOrGlass : 1 = false;  // its shading spawned reflected or refracted rays
+  bool spawnedRays : 1 = false;    // ... or any rays
 };
+static_assert(sizeof(Settled) == 1);
 using SettledPixels = UnfilledVector<Settled>;
 
-// The pass's image and buffers, filled pixel by pixel.
+// Where the samples of one or more passes of a group go: at each pixel their
+// mean, to be added to the film. Where the film keeps each sample in its
+// pixel (the box filter), all the group's passes share one, and their
+// samples take the memory of one image rather than one each; otherwise each
+// pass has its own, added at its offset. Left unfilled: the first of its
+// passes clears each pixel as it comes to it.
+struct SampleImage {
+  Image means;
+  int passes;
+  float weight;  // of each sample: 1 / passes
+};
+
+// The pass's buffers, filled pixel by pixel.
 struct Images {
   Images(const RenderSettings& settings, bool whatWasHit)
       : result{blankResult(settings, whatWasHit)} {}
   Images(const Images&) = delete;  // the pointers are into its own result
 
   RenderResult result;
-  Image& image = result.image;
   Image* cost = result.buffer("cost");  // or none, where not wanted
   // None but in the first pass, and there only those wanted.
   Image* depth = result.buffer("depth");
@@ -173,17 +189,25 @@ struct Images {
 };
 
 // One pass of a group: where its rays go, where it reports, what pass 2
-// settled of each pixel and the images its shading fills.
+// settled of each pixel, where its samples go and the buffers its shading
+// fills.
 struct GroupPass {
   GroupPass(const AccumulationPass& pass, const PassRecording& recording, SettledPixels& settled,
-            const RenderSettings& settings)
-      : pass(pass), recording(recording), settled(settled), images(settings, recording.index == 0) {
+            SampleImage& samples, bool clearsSamples, const RenderSettings& settings)
+      : pass(pass),
+        recording(recording),
+        settled(settled),
+        samples(samples),
+        clearsSamples(clearsSamples),
+        images(settings, recording.index == 0) {
     settled.resize(static_cast<std::size_t>(settings.width) * settings.height);
   }
 
   const AccumulationPass& pass;
   const PassRecording recording;
   SettledPixels& settled;  // the render's, kept from group to group
+  SampleImage& samples;
+  const bool clearsSamples;  // the first of the passes that share them
   Images images;
   const ItemBuffer* items = nullptr;  // once pass 1 has filled it
 };
@@ -194,20 +218,31 @@ class HybridGroup {
  public:
   HybridGroup(const TracingContext& context, const TessellatedScene& tessellated,
               const RenderSettings& settings, std::span<const AccumulationPass> passes,
-              int firstPass, PassProjections& projections, RenderObserver& observer,
+              int firstPass, PassProjections& projections, Film& film, RenderObserver& observer,
               StepRecorder* trees, std::vector<SettledPixels>& settled)
       : context_(context),
         tessellated_(tessellated),
         settings_(settings),
         projections_(projections),
+        film_(film),
         observer_(observer),
         workers_(settings.threads, observer),
         view_(context.scene.camera, settings.width, settings.height) {
     settled.resize(std::max(settled.size(), passes.size()));
+    const bool shared = std::ranges::all_of(passes, [&](const AccumulationPass& pass) {
+      return film.keepsEachSampleInItsPixel(pass.pixelOffset);
+    });
     for (std::size_t i = 0; i < passes.size(); ++i) {
       const PassRecording recording{i == 0 ? observer.stepRecorder() : nullptr, trees,
                                     firstPass + static_cast<int>(i)};
-      passes_.emplace_back(passes[i], recording, settled[i], settings);
+      const bool clearsSamples = i == 0 || !shared;
+      if (clearsSamples) {
+        const int sharing = shared ? static_cast<int>(passes.size()) : 1;
+        sampleImages_.push_back({Image::unfilled(settings.width, settings.height), sharing,
+                                 1.0f / static_cast<float>(sharing)});
+      }
+      passes_.emplace_back(passes[i], recording, settled[i], sampleImages_.back(), clearsSamples,
+                           settings);
     }
   }
 
@@ -231,6 +266,7 @@ class HybridGroup {
     }
     counters.raySeconds += secondsSince(start);
 
+    addSamplesToFilm();
     std::vector<RenderResult> results;
     for (GroupPass& pass : passes_) results.push_back(std::move(pass.images.result));
     return results;
@@ -286,10 +322,24 @@ class HybridGroup {
   bool isTreePixel(const GroupPass& pass, int x, int y) const {
     return pass.recording.trees && pass.recording.trees->wantsTreeOf({x, y});
   }
-  // A pixel shaded after its band, to the observer: the first pass's, whose
-  // image it shows.
+  // A pixel shaded after its band, to the observer, where it changed the
+  // image it is shown: the first pass's samples, and those that share them.
   void showShaded(const GroupPass& pass, int x, int y) {
-    if (&pass == &passes_.front()) observer_.onPixelsDone({x, y, x + 1, y + 1}, pass.images.image);
+    if (&pass.samples == &passes_.front().samples)
+      observer_.onPixelsDone({x, y, x + 1, y + 1}, pass.samples.means);
+  }
+
+  // Each image of samples to the film: shared by all the passes, as the
+  // means of as many samples; else each pass's at its offset.
+  void addSamplesToFilm() {
+    for (GroupPass& pass : passes_) {
+      if (!pass.clearsSamples) continue;
+      SampleImage& samples = pass.samples;
+      if (samples.passes > 1)
+        film_.addMeans(std::move(samples.means), samples.passes, workers_);
+      else
+        film_.addImage(std::move(samples.means), pass.pass.pixelOffset, workers_);
+    }
   }
 
   // A pixel's neighbours, in the order they are tested: left, right, above,
@@ -401,12 +451,14 @@ class HybridGroup {
     const ItemBuffer& items = *pass.items;
     const int face = items.faceAt(x, y);
     const Item own = items.itemOf(face);
+    if (pass.clearsSamples) pass.samples.means.at(x, y) = Color(0.0f);
     if (pass.images.cost) pass.images.cost->at(x, y) = Color(0.0f);
     const FoundHit found = ownHit(pass, x, y, own, ray, work.counters);
     work.coveredPixels += own.shape >= 0 ? 1 : 0;
     if (pass.images.face) pass.images.face->at(x, y) = Color(static_cast<float>(face));
     Settled& settled = settledAt(pass, x, y);
-    settled = {own.shape >= 0 && !found.hit.shape ? Verdict::Outside : Verdict::FromItemBuffer};
+    settled = Settled{.verdict = own.shape >= 0 && !found.hit.shape ? Verdict::Outside
+                                                                    : Verdict::FromItemBuffer};
     const std::array<int, 4> beside = facesBeside(items, x, y, face);
     if (std::ranges::count(beside, face) == 4) return found;
     std::array<Item, 4> tested;
@@ -451,6 +503,7 @@ class HybridGroup {
         --counted.counts[kFromItemBuffer];
         counted.counts[kSpawning] -= settled.spawnedRays;
         counted.counts[kMirrorOrGlass] -= settled.mirrorOrGlass;
+        takeBackSample(pass, x, y, found);
         shade(pass, x, y, found, outlines);
         shadedAgain.push_back({x, y});
         showShaded(pass, x, y);
@@ -463,6 +516,15 @@ class HybridGroup {
           shadedAgainStep(shadedAgain, outlines,
                           [&](int x, int y) { return shownOf(first, x, y); }),
           std::int64_t{2} * settings_.height);
+  }
+
+  // Takes the sample that the pixel's shading from the item buffer added
+  // out of its pass's image: the same colour, shaded again as it was
+  // (first_hit_batch.hpp), its rays not counted twice.
+  void takeBackSample(GroupPass& pass, int x, int y, const FoundHit& found) {
+    TraceCounters uncounted;
+    const Color added = shadeFromItemBuffer(found, uncounted, nullptr).color;
+    pass.samples.means.at(x, y) -= added * pass.samples.weight;
   }
 
   void shadeTreePixels(GroupPass& pass, PassWork& work) {
@@ -498,7 +560,7 @@ class HybridGroup {
         first.recording.steps->record(raysStep(band, work.passes.front().counters,
                                                [&](int x, int y) { return shownOf(first, x, y); }),
                                       settings_.height + task);
-      observer_.onPixelsDone(band, first.images.image);
+      observer_.onPixelsDone(band, first.samples.means);
     });
   }
 
@@ -537,7 +599,6 @@ class HybridGroup {
           const FoundHit found = findHit(pass, x, y, *ray, work.passes[i]);
           if (isTreePixel(pass, x, y)) {
             work.passes[i].treePixels.push_back({x, y, found});
-            pass.images.image.at(x, y) = Color(0.0f);  // shown black, not unwritten, till shaded
             continue;
           }
           if (!shadedInBatch(pass, found, x, y)) {
@@ -602,11 +663,19 @@ class HybridGroup {
       sample = tracePrimary(context_, found.ray, whitted, traced, treeHere);
     } else {
       ++counters.counts[kFromItemBuffer];
-      const Hit* const seen = found.hit.shape ? &found.hit : nullptr;
-      sample = shadeFirstHit(context_, found.ray, seen, whitted, traced, treeHere);
+      sample = shadeFromItemBuffer(found, traced, treeHere);
     }
     if (tree) pass.recording.trees->recordTree(std::move(*tree));
     record(pass, x, y, sample, traced.shadowRays > before.shadow, before, counters);
+  }
+
+  // Whitted's Shade from the first hit the item buffer gave, the background
+  // where it shows nothing.
+  SampleResult shadeFromItemBuffer(const FoundHit& found, TraceCounters& traced,
+                                   RayTree* tree) const {
+    SingleRayChoices whitted;
+    const Hit* const seen = found.hit.shape ? &found.hit : nullptr;
+    return shadeFirstHit(context_, found.ray, seen, whitted, traced, tree);
   }
 
   // A pixel's sample, into the pass's images, and what its shading spawned
@@ -621,8 +690,8 @@ class HybridGroup {
     counters.counts[kMirrorOrGlass] += settled.mirrorOrGlass;
     addCost(pass, x, y, traced.intersections.tests - before.tests);
 
+    pass.samples.means.at(x, y) += sample.color * pass.samples.weight;
     Images& images = pass.images;
-    images.image.at(x, y) = sample.color;
     if (images.depth) images.depth->at(x, y) = Color(sample.depth);
     if (images.normal) images.normal->at(x, y) = sample.normal;
   }
@@ -631,11 +700,13 @@ class HybridGroup {
   const TessellatedScene& tessellated_;
   const RenderSettings& settings_;
   PassProjections& projections_;
+  Film& film_;
   RenderObserver& observer_;
   const Workers workers_;
   const ViewFrame view_;
-  std::deque<GroupPass> passes_;        // a deque: a pass's images point into the pass
-  std::deque<ItemBuffer> itemBuffers_;  // a pass's, which it points to
+  std::deque<SampleImage> sampleImages_;  // a deque: the passes point to theirs
+  std::deque<GroupPass> passes_;          // a deque: a pass's images point into the pass
+  std::deque<ItemBuffer> itemBuffers_;    // a pass's, which it points to
 };
 
 // Four passes in a group: a packet of eight shadow rays then leaves from two
@@ -663,8 +734,8 @@ RenderResult HybridRenderer::render(const Scene& scene, const RenderSettings& se
   RenderResult result = renderInPassGroups(
       scene, settings, observer, largestGroup(settings),
       [&](const TessellatedScene& tessellated, std::span<const AccumulationPass> passes,
-          int firstPass, PassProjections& projections, RenderObserver& groupObserver) {
-        return HybridGroup(context, tessellated, settings, passes, firstPass, projections,
+          int firstPass, PassProjections& projections, Film& film, RenderObserver& groupObserver) {
+        return HybridGroup(context, tessellated, settings, passes, firstPass, projections, film,
                            groupObserver, observer.stepRecorder(), settled)
             .run(counters);
       });

@@ -145,9 +145,9 @@ RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSett
                         });
 }
 
-// Each pass's pixels are added to the film as samples at the pass's offset,
-// so that the reconstruction filter weighs them as it weighs the ray
-// tracers' samples. The scene is tessellated again only when a pass's time
+// Each pass's pixels go to the film as samples at the pass's offset, so
+// that the reconstruction filter weighs them as it weighs the ray tracers'
+// samples. The scene is tessellated again only when a pass's time
 // differs from the last. The auxiliary buffers are the first pass's, but
 // "cost", which adds up over the passes where it is wanted, as do the counters.
 RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settings,
@@ -171,10 +171,9 @@ RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settin
     const std::span<const AccumulationPass> group(passes.begin() + first, passes.begin() + end);
     PassGroupObserver groupObserver(observer, first, end - first, passCount);
     std::vector<RenderResult> results =
-        renderGroup(tessellated, group, first, projections, groupObserver);
+        renderGroup(tessellated, group, first, projections, film, groupObserver);
     for (int pass = first; pass < end; ++pass) {
       RenderResult& result = results[static_cast<std::size_t>(pass - first)];
-      film.addImage(std::move(result.image), passes[pass].pixelOffset, workers);
       if (pass == 0) {
         accumulated = std::move(result);
         continue;
@@ -203,10 +202,12 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
   return renderInPassGroups(
       scene, settings, observer, 1,
       [&](const TessellatedScene& tessellated, std::span<const AccumulationPass> passes,
-          int firstPass, PassProjections& projections, RenderObserver& passObserver) {
+          int firstPass, PassProjections& projections, Film& film, RenderObserver& passObserver) {
         const ScreenGeometry screen = projections.of(firstPass, tessellated);
         std::vector<RenderResult> results;
         results.push_back(renderPass(tessellated, screen, passes[0], passObserver));
+        film.addImage(std::move(results.back().image), passes[0].pixelOffset,
+                      Workers(settings.threads));
         return results;
       });
 }

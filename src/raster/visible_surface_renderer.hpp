@@ -21,6 +21,7 @@
 
 #include "raster/raster_frame.hpp"
 #include "raster/tessellated_scene.hpp"
+#include "render/film.hpp"
 
 namespace rise {
 
@@ -112,11 +113,13 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
 // Renders a group of consecutive passes that share an instant, all of the
 // scene tessellated then, the first of them pass number `firstPass`: for
 // each, in order, what a PassRenderer renders, its projection asked of
-// `projections`. The observer reports the group's progress; it records steps
-// only in the group that holds pass 0, whose steps alone are to be recorded.
+// `projections`, but that the passes' samples go to `film` rather than into
+// their results' images. The observer reports the group's progress; it
+// records steps only in the group that holds pass 0, whose steps alone are to
+// be recorded.
 using PassGroupRenderer = std::function<std::vector<RenderResult>(
     const TessellatedScene& tessellated, std::span<const AccumulationPass> passes, int firstPass,
-    PassProjections& projections, RenderObserver& observer)>;
+    PassProjections& projections, Film& film, RenderObserver& observer)>;
 
 // renderInPasses, the passes taken in groups of at most `largestGroup`, for
 // an algorithm that does better with several passes in hand at once: the

@@ -12,6 +12,16 @@ constexpr float kGaussianSigma = 0.5f;
 // resolved whole.
 constexpr int kRowsPerRange = 16;
 
+// Calls visit(x, y) at every pixel of a width x height image, the workers
+// sharing the rows.
+template <typename Visit>
+void forEachPixel(int width, int height, const Workers& workers, const Visit& visit) {
+  workers.forEachRange(height, kRowsPerRange, [&](int, int firstRow, int endRow) {
+    for (int y = firstRow; y < endRow; ++y)
+      for (int x = 0; x < width; ++x) visit(x, y);
+  });
+}
+
 float gaussian(float x) { return std::exp(-x * x / (2.0f * kGaussianSigma * kGaussianSigma)); }
 
 float radiusOf(FilterKind kind) {
@@ -136,10 +146,8 @@ void Film::addImage(Image samples, const Vec2& offset, const Workers& workers) {
       kept_ = KeptImages{std::move(samples), 1};
       return;
     }
-    workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
-      for (int y = firstRow; y < endRow; ++y)
-        for (int x = 0; x < width_; ++x) kept_->sum.at(x, y) += samples.at(x, y);
-    });
+    forEachPixel(width_, height_, workers,
+                 [&](int x, int y) { kept_->sum.at(x, y) += samples.at(x, y); });
     ++kept_->count;
     return;
   }
@@ -147,19 +155,29 @@ void Film::addImage(Image samples, const Vec2& offset, const Workers& workers) {
   gather(samples, offset, workers);
 }
 
+void Film::addMeans(Image means, int samples, const Workers& workers) {
+  assert(means.width() == width_ && means.height() == height_ && weightSum_.empty());
+  const auto count = static_cast<float>(samples);
+  if (!kept_) {
+    forEachPixel(width_, height_, workers, [&](int x, int y) { means.at(x, y) *= count; });
+    kept_ = KeptImages{std::move(means), samples};
+    return;
+  }
+  forEachPixel(width_, height_, workers,
+               [&](int x, int y) { kept_->sum.at(x, y) += count * means.at(x, y); });
+  kept_->count += samples;
+}
+
 void Film::gather(const Image& samples, const Vec2& offset, const Workers& workers) {
   const std::vector<Neighbour> neighbours = neighboursTaken(filter_, offset);
-  workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
-    for (int y = firstRow; y < endRow; ++y)
-      for (int x = 0; x < width_; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
-        for (const Neighbour& n : neighbours) {
-          const int sx = x + n.dx, sy = y + n.dy;
-          if (sx < 0 || sx >= width_ || sy < 0 || sy >= height_) continue;
-          weightedSum_[i] += n.weight * samples.at(sx, sy);
-          weightSum_[i] += n.weight;
-        }
-      }
+  forEachPixel(width_, height_, workers, [&](int x, int y) {
+    const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
+    for (const Neighbour& n : neighbours) {
+      const int sx = x + n.dx, sy = y + n.dy;
+      if (sx < 0 || sx >= width_ || sy < 0 || sy >= height_) continue;
+      weightedSum_[i] += n.weight * samples.at(sx, sy);
+      weightSum_[i] += n.weight;
+    }
   });
 }
 
@@ -170,20 +188,14 @@ Image Film::resolve(const Workers& workers) {
     // the weighted sums give.
     const auto count = static_cast<float>(kept_->count);
     if (kept_->count > 1)
-      workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
-        for (int y = firstRow; y < endRow; ++y)
-          for (int x = 0; x < width_; ++x) sum.at(x, y) /= count;
-      });
+      forEachPixel(width_, height_, workers, [&](int x, int y) { sum.at(x, y) /= count; });
     return std::move(sum);
   }
   Image image(width_, height_);
   if (weightSum_.empty()) return image;
-  workers.forEachRange(height_, kRowsPerRange, [&](int, int firstRow, int endRow) {
-    for (int y = firstRow; y < endRow; ++y)
-      for (int x = 0; x < width_; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
-        if (weightSum_[i] > 0.0f) image.at(x, y) = weightedSum_[i] / weightSum_[i];
-      }
+  forEachPixel(width_, height_, workers, [&](int x, int y) {
+    const std::size_t i = static_cast<std::size_t>(y) * width_ + x;
+    if (weightSum_[i] > 0.0f) image.at(x, y) = weightedSum_[i] / weightSum_[i];
   });
   return image;
 }

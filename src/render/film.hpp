@@ -70,6 +70,18 @@ class Film {
   // reconstruction.
   void addImage(Image samples, const Vec2& offset, const Workers& workers);
 
+  // Whether the filter counts a sample taken at `offset` from its pixel's
+  // top-left corner towards that pixel alone, with weight 1 (the box).
+  bool keepsEachSampleInItsPixel(const Vec2& offset) const {
+    return filter_.keepsEachSampleInItsPixel(offset);
+  }
+  // Adds an image of the means of `samples` samples a pixel, each kept in its
+  // pixel by the filter (keepsEachSampleInItsPixel), all added while the
+  // film holds no sample the filter took elsewhere: the same sums as adding
+  // an image for each sample, but for their rounding, with one image of
+  // memory rather than one a sample.
+  void addMeans(Image means, int samples, const Workers& workers);
+
   // The weighted average at every pixel, the workers sharing the rows; black
   // where no sample reached. Called once, at the end: an image kept whole
   // is handed over.

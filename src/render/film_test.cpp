@@ -97,6 +97,48 @@ TEST(Film, AnImageAddedWholeEqualsItsSamplesAddedOneByOne) {
   }
 }
 
+// Samples kept in their pixels (the box filter) may be added as the means
+// of several a pixel, one image for many: the same image as adding each
+// sample's, but for rounding, whatever came before them and on any number
+// of threads.
+TEST(Film, MeansOfSamplesKeptInTheirPixelsCountAsThatManySamples) {
+  const int width = 7, height = 5;
+  const auto color = [](int x, int y, int sample) {
+    return Color(0.3f * static_cast<float>(x + sample), 1.0f / static_cast<float>(y + sample + 1),
+                 0.01f * static_cast<float>(x * y + 1));
+  };
+  const Vec2 offset(0.25f, 0.75f);
+  const auto imageOf = [&](int sample) {
+    Image samples(width, height);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) samples.at(x, y) = color(x, y, sample);
+    return samples;
+  };
+  const auto meansOf = [&](int first, int count) {
+    Image means(width, height);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        for (int sample = first; sample < first + count; ++sample)
+          means.at(x, y) += color(x, y, sample) / static_cast<float>(count);
+    return means;
+  };
+  Film byImages(width, height, FilterKind::Box);
+  for (int sample = 0; sample < 8; ++sample) byImages.addImage(imageOf(sample), offset, Workers(1));
+  const Image expected = byImages.resolve(Workers(1));
+  for (int threads : {1, 3}) {
+    Film byMeans(width, height, FilterKind::Box);
+    byMeans.addMeans(meansOf(0, 3), 3, Workers(threads));
+    byMeans.addImage(imageOf(3), offset, Workers(threads));
+    byMeans.addMeans(meansOf(4, 4), 4, Workers(threads));
+    const Image image = byMeans.resolve(Workers(threads));
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        for (int channel = 0; channel < 3; ++channel)
+          EXPECT_NEAR(image.at(x, y)[channel], expected.at(x, y)[channel], 1e-6f)
+              << x << "," << y << ", " << threads << " threads";
+  }
+}
+
 // What lets a render skip the film: the box filter's samples stay in their
 // pixels, so each tile resolves to the final colours and one image of
 // samples, one a pixel, is its own reconstruction, to the bit.
