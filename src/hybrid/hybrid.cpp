@@ -143,11 +143,13 @@ struct PassRecording {
 
 // A pixel's primary ray and the first hit the item buffer and the item tests
 // found for it, from the moment they are found to its shading a few dozen
-// pixels later, and never written to memory of the image's size.
+// pixels later, and never written to memory of the image's size; and whether
+// the pixel falls back, told to memory (Settled) once it is shaded.
 struct FoundHit {
   Ray ray;
   Item item;  // the item buffer's
   Hit hit;    // on the item's exact surface: its shape none where the item buffer shows nothing
+  Verdict verdict = Verdict::FromItemBuffer;
 };
 
 // What pass 2 settled of each pixel of a pass, for the pass's steps and for
@@ -414,9 +416,10 @@ class HybridGroup {
 
   // Marks the pixel as falling back inside an outline, unless it already
   // falls back; whether it did not.
-  static bool fallBack(Settled& settled) {
-    if (settled.verdict != Verdict::FromItemBuffer) return false;
-    settled.verdict = Verdict::Inside;
+  template <typename HasVerdict>
+  static bool fallBack(HasVerdict& pixel) {
+    if (pixel.verdict != Verdict::FromItemBuffer) return false;
+    pixel.verdict = Verdict::Inside;
     return true;
   }
 
@@ -453,12 +456,10 @@ class HybridGroup {
     const Item own = items.itemOf(face);
     if (pass.clearsSamples) pass.samples.means.at(x, y) = Color(0.0f);
     if (pass.images.cost) pass.images.cost->at(x, y) = Color(0.0f);
-    const FoundHit found = ownHit(pass, x, y, own, ray, work.counters);
+    FoundHit found = ownHit(pass, x, y, own, ray, work.counters);
     work.coveredPixels += own.shape >= 0 ? 1 : 0;
     if (pass.images.face) pass.images.face->at(x, y) = Color(static_cast<float>(face));
-    Settled& settled = settledAt(pass, x, y);
-    settled = Settled{.verdict = own.shape >= 0 && !found.hit.shape ? Verdict::Outside
-                                                                    : Verdict::FromItemBuffer};
+    if (own.shape >= 0 && !found.hit.shape) found.verdict = Verdict::Outside;
     const std::array<int, 4> beside = facesBeside(items, x, y, face);
     if (std::ranges::count(beside, face) == 4) return found;
     std::array<Item, 4> tested;
@@ -470,7 +471,7 @@ class HybridGroup {
       if (item == own || std::find(tested.begin(), end, item) != end) continue;
       tested[static_cast<std::size_t>(count++)] = item;
       if (!coversNearer(item, pass, x, y, found, work.counters)) continue;
-      fallBack(settled);
+      fallBack(found);
       work.seeds.push_back({x, y, item});
     }
     return found;
@@ -493,7 +494,7 @@ class HybridGroup {
       pending.pop_front();
       forEachNeighbour(seed.x, seed.y, [&](int x, int y) {
         if (itemAt(pass, x, y) == seed.item || !tested.insert({x, y, seed.item}).second) return;
-        const FoundHit found = ownHit(pass, x, y, itemAt(pass, x, y), rayAt(pass, x, y), outlines);
+        FoundHit found = ownHit(pass, x, y, itemAt(pass, x, y), rayAt(pass, x, y), outlines);
         if (!coversNearer(seed.item, pass, x, y, found, outlines)) return;
         pending.push_back({x, y, seed.item});
         Settled& settled = settledAt(pass, x, y);
@@ -504,6 +505,7 @@ class HybridGroup {
         counted.counts[kSpawning] -= settled.spawnedRays;
         counted.counts[kMirrorOrGlass] -= settled.mirrorOrGlass;
         takeBackSample(pass, x, y, found);
+        found.verdict = Verdict::Inside;
         shade(pass, x, y, found, outlines);
         shadedAgain.push_back({x, y});
         showShaded(pass, x, y);
@@ -527,9 +529,13 @@ class HybridGroup {
     pass.samples.means.at(x, y) -= added * pass.samples.weight;
   }
 
+  // The tree pixel's verdict is in memory since it was found, where an
+  // outline may have changed it.
   void shadeTreePixels(GroupPass& pass, PassWork& work) {
     for (const TreePixel& pixel : work.treePixels) {
-      shade(pass, pixel.x, pixel.y, pixel.found, work.counters);
+      FoundHit found = pixel.found;
+      found.verdict = settledAt(pass, pixel.x, pixel.y).verdict;
+      shade(pass, pixel.x, pixel.y, found, work.counters);
       showShaded(pass, pixel.x, pixel.y);
     }
   }
@@ -540,7 +546,8 @@ class HybridGroup {
 
     FirstHitBatch batch;
     struct Batched {
-      std::size_t pass;
+      GroupPass* pass;
+      PassWork* work;
       int x;
     };
     std::vector<Batched> batched;  // where each of the batch's hits is from
@@ -593,41 +600,37 @@ class HybridGroup {
         for (const GroupPass& pass : passes_) scratch.rays.push_back(rayAt(pass, x, y));
       auto ray = scratch.rays.cbegin();
       for (int x = start; x < end; ++x) {
-        for (std::size_t i = 0; i < passes_.size(); ++i, ++ray) {
-          GroupPass& pass = passes_[i];
-          HybridCounters& counters = work.passes[i].counters;
-          const FoundHit found = findHit(pass, x, y, *ray, work.passes[i]);
+        auto passWork = work.passes.begin();
+        for (GroupPass& pass : passes_) {
+          PassWork& done = *passWork++;
+          const FoundHit found = findHit(pass, x, y, *ray++, done);
           if (isTreePixel(pass, x, y)) {
-            work.passes[i].treePixels.push_back({x, y, found});
+            settledAt(pass, x, y) = Settled{.verdict = found.verdict};
+            done.treePixels.push_back({x, y, found});
             continue;
           }
-          if (!shadedInBatch(pass, found, x, y)) {
-            shade(pass, x, y, found, counters);
+          if (found.verdict != Verdict::FromItemBuffer || !found.hit.shape) {
+            shade(pass, x, y, found, done.counters);
             continue;
           }
-          ++counters.counts[kFromItemBuffer];
-          scratch.batched.push_back({i, x});
-          batch.add(found.ray, found.hit, whitted, counters.traced);
+          ++done.counters.counts[kFromItemBuffer];
+          scratch.batched.push_back({&pass, &done, x});
+          batch.add(found.ray, found.hit, whitted, done.counters.traced);
         }
       }
       batch.traceShadowRays();
       for (std::size_t i = 0; i < batch.size(); ++i) {
-        const RowScratch::Batched& from = scratch.batched[i];
-        GroupPass& pass = passes_[from.pass];
-        const int x = from.x;
-        HybridCounters& counters = work.passes[from.pass].counters;
+        const auto& [pass, done, x] = scratch.batched[i];
+        HybridCounters& counters = done->counters;
         const IntersectionCounters shadowRayCosts = batch.shadowRayCosts(i);
         counters.traced.intersections += shadowRayCosts;
-        addCost(pass, x, y, shadowRayCosts.tests);
+        addCost(*pass, x, y, shadowRayCosts.tests);
         const RaysSoFar before(counters.traced);
         const SampleResult sample = batch.finish(i, whitted, counters.traced);
-        record(pass, x, y, sample, batch.sentShadowRays(i), before, counters);
+        record(*pass, x, y, Verdict::FromItemBuffer, sample, batch.sentShadowRays(i), before,
+               counters);
       }
     }
-  }
-
-  bool shadedInBatch(const GroupPass& pass, const FoundHit& found, int x, int y) const {
-    return settledAt(pass, x, y).verdict == Verdict::FromItemBuffer && found.hit.shape;
   }
 
   // The counts of the rays traced so far, to tell what a pixel's shading
@@ -644,7 +647,7 @@ class HybridGroup {
   // Whitted's Shade from the item's hit, or his whole primary ray where the
   // pixel fell back.
   void shade(GroupPass& pass, int x, int y, const FoundHit& found, HybridCounters& counters) {
-    const Verdict verdict = settledAt(pass, x, y).verdict;
+    const Verdict verdict = found.verdict;
     TraceCounters& traced = counters.traced;
     const RaysSoFar before(traced);
     SingleRayChoices whitted;
@@ -666,7 +669,7 @@ class HybridGroup {
       sample = shadeFromItemBuffer(found, traced, treeHere);
     }
     if (tree) pass.recording.trees->recordTree(std::move(*tree));
-    record(pass, x, y, sample, traced.shadowRays > before.shadow, before, counters);
+    record(pass, x, y, verdict, sample, traced.shadowRays > before.shadow, before, counters);
   }
 
   // Whitted's Shade from the first hit the item buffer gave, the background
@@ -678,16 +681,17 @@ class HybridGroup {
     return shadeFirstHit(context_, found.ray, seen, whitted, traced, tree);
   }
 
-  // A pixel's sample, into the pass's images, and what its shading spawned
-  // since `before`, into the counters.
-  void record(GroupPass& pass, int x, int y, const SampleResult& sample, bool spawnedShadowRays,
-              const RaysSoFar& before, HybridCounters& counters) {
-    Settled& settled = settledAt(pass, x, y);
+  // A pixel's sample, into the pass's images, and how it was shaded and what
+  // its shading spawned since `before`, into its record and the counters.
+  void record(GroupPass& pass, int x, int y, Verdict verdict, const SampleResult& sample,
+              bool spawnedShadowRays, const RaysSoFar& before, HybridCounters& counters) {
     const TraceCounters& traced = counters.traced;
-    settled.mirrorOrGlass = traced.reflectionRays + traced.refractionRays > before.mirrorOrGlass;
-    settled.spawnedRays = spawnedShadowRays || settled.mirrorOrGlass;
-    counters.counts[kSpawning] += settled.spawnedRays;
-    counters.counts[kMirrorOrGlass] += settled.mirrorOrGlass;
+    const bool mirrorOrGlass = traced.reflectionRays + traced.refractionRays > before.mirrorOrGlass;
+    const bool spawnedRays = spawnedShadowRays || mirrorOrGlass;
+    settledAt(pass, x, y) =
+        Settled{.verdict = verdict, .mirrorOrGlass = mirrorOrGlass, .spawnedRays = spawnedRays};
+    counters.counts[kSpawning] += spawnedRays;
+    counters.counts[kMirrorOrGlass] += mirrorOrGlass;
     addCost(pass, x, y, traced.intersections.tests - before.tests);
 
     pass.samples.means.at(x, y) += sample.color * pass.samples.weight;
