@@ -77,7 +77,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <deque>
-#include <optional>
 #include <set>
 #include <span>
 #include <string_view>
@@ -529,14 +528,19 @@ class HybridGroup {
     pass.samples.means.at(x, y) -= added * pass.samples.weight;
   }
 
-  // The tree pixel's verdict is in memory since it was found, where an
-  // outline may have changed it.
+  // The pixel whose ray tree is recorded, one for each pass. Its verdict is
+  // in memory since it was found, where an outline may have changed it.
   void shadeTreePixels(GroupPass& pass, PassWork& work) {
-    for (const TreePixel& pixel : work.treePixels) {
-      FoundHit found = pixel.found;
-      found.verdict = settledAt(pass, pixel.x, pixel.y).verdict;
-      shade(pass, pixel.x, pixel.y, found, work.counters);
-      showShaded(pass, pixel.x, pixel.y);
+    for (const auto& [x, y, foundInBand] : work.treePixels) {
+      FoundHit found = foundInBand;
+      found.verdict = settledAt(pass, x, y).verdict;
+      RayTree tree;
+      tree.pixel = {x, y};
+      tree.sample = pass.recording.index;
+      tree.raster = Vec2(x, y) + pass.pass.pixelOffset;
+      shade(pass, x, y, found, work.counters, &tree);
+      pass.recording.trees->recordTree(std::move(tree));
+      showShaded(pass, x, y);
     }
   }
 
@@ -645,30 +649,21 @@ class HybridGroup {
   };
 
   // Whitted's Shade from the item's hit, or his whole primary ray where the
-  // pixel fell back.
-  void shade(GroupPass& pass, int x, int y, const FoundHit& found, HybridCounters& counters) {
+  // pixel fell back; its rays recorded in `tree` unless that is null.
+  void shade(GroupPass& pass, int x, int y, const FoundHit& found, HybridCounters& counters,
+             RayTree* tree = nullptr) {
     const Verdict verdict = found.verdict;
     TraceCounters& traced = counters.traced;
     const RaysSoFar before(traced);
-    SingleRayChoices whitted;
-    // A tree is made only for the pixel recorded.
-    std::optional<RayTree> tree;
-    if (isTreePixel(pass, x, y)) {
-      tree.emplace();
-      tree->pixel = {x, y};
-      tree->sample = pass.recording.index;
-      tree->raster = Vec2(x, y) + pass.pass.pixelOffset;
-    }
-    RayTree* const treeHere = tree ? &*tree : nullptr;
     SampleResult sample;
     if (verdict != Verdict::FromItemBuffer) {
       ++counters.counts[verdict == Verdict::Outside ? kOutside : kInside];
-      sample = tracePrimary(context_, found.ray, whitted, traced, treeHere);
+      SingleRayChoices whitted;
+      sample = tracePrimary(context_, found.ray, whitted, traced, tree);
     } else {
       ++counters.counts[kFromItemBuffer];
-      sample = shadeFromItemBuffer(found, traced, treeHere);
+      sample = shadeFromItemBuffer(found, traced, tree);
     }
-    if (tree) pass.recording.trees->recordTree(std::move(*tree));
     record(pass, x, y, verdict, sample, traced.shadowRays > before.shadow, before, counters);
   }
 
