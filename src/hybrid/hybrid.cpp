@@ -585,12 +585,12 @@ class HybridGroup {
   // made first, in a loop of their own, so that the square roots and
   // divisions of one ray's direction do not wait for the last one's shading;
   // then each pixel's first hit found in each pass of the group, and the run
-  // shaded. The pixels whose
-  // first hits the item buffer gave are shaded as a batch
-  // (first_hit_batch.hpp), their shadow rays traced together: each pixel's
-  // samples one after another, so that a packet's rays leave from one pixel,
-  // or two, towards one light, and meet nearly the same boxes. The others are
-  // shaded whole at once; the pixel whose ray tree is recorded, last.
+  // shaded. The pixels whose first hits the item buffer gave are shaded as a
+  // batch (first_hit_batch.hpp), their shadow rays traced together: each
+  // pixel's samples one after another, so that a packet's rays leave from one
+  // pixel, or two, towards one light, and meet nearly the same boxes. The
+  // others are shaded whole at once; the pixel whose ray tree is recorded,
+  // last, its verdict kept till then.
   void findAndShadeRow(int y, int x0, int x1, RowScratch& scratch, BandWork& work) {
     constexpr int kRun = 64;
     FirstHitBatch& batch = scratch.batch;
