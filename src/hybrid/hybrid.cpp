@@ -414,7 +414,9 @@ class HybridGroup {
   }
 
   // Marks the pixel as falling back inside an outline, unless it already
-  // falls back; whether it did not.
+  // falls back; whether it did not. Of a pixel being found (FoundHit) or
+  // already shaded (Settled, whose verdict is a bit-field: no reference can
+  // name it).
   template <typename HasVerdict>
   static bool fallBack(HasVerdict& pixel) {
     if (pixel.verdict != Verdict::FromItemBuffer) return false;
