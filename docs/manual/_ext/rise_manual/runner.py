@@ -37,12 +37,32 @@ def _digest_of_file(path, remember=False):
     return digest.hexdigest()
 
 
+def _source_entries(repository):
+    """The entries at the top of the repository that are its own: those git
+    tracks, in a git checkout, and not what a reader made beside them, such as
+    the folder the README's `rise compare ... -o classic` writes, which the
+    manual's own command writing there would overwrite. Elsewhere, all but
+    `.git`."""
+    try:
+        tracked = subprocess.run(
+            ["git", "-C", str(repository), "ls-files", "-z"], capture_output=True, check=True
+        ).stdout.decode()
+    except (OSError, subprocess.CalledProcessError):
+        return [entry for entry in repository.iterdir() if entry.name != ".git"]
+    names = {path.split("/", 1)[0] for path in tracked.split("\0") if path}
+    return [repository / name for name in sorted(names)]
+
+
 def make_workspace(repository, program, workspace):
-    """A folder whose entries are the repository's, linked, and `build`, the
-    folder of the program; made once, kept across builds."""
+    """A folder whose entries are the repository's own, linked, and `build`,
+    the folder of the program; made once, kept across builds, its links to
+    anything else taken away."""
     workspace.mkdir(parents=True, exist_ok=True)
-    links = {entry.name: entry for entry in repository.iterdir() if entry.name not in (".git", "build")}
+    links = {entry.name: entry for entry in _source_entries(repository) if entry.name != "build"}
     links["build"] = Path(program).resolve().parent
+    for stale in workspace.iterdir():
+        if stale.is_symlink() and stale.name not in links:
+            stale.unlink()
     for name, target in links.items():
         link = workspace / name
         if link.is_symlink() and Path(os.readlink(link)) == target:
