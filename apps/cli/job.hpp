@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/text.hpp"
 #include "output_check.hpp"
 #include "render/renderer.hpp"
 #include "settings_options.hpp"
@@ -18,13 +19,6 @@ namespace rise::cli {
 
 inline constexpr int kExitOutputError = 1;
 inline constexpr int kExitBadInput = 2;
-
-template <typename Names>
-std::string joined(const Names& names) {
-  std::string text;
-  for (const auto& name : names) text += (text.empty() ? "" : ", ") + std::string(name);
-  return text;
-}
 
 // A scene and the settings to render it with.
 struct Job {

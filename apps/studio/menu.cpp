@@ -6,6 +6,7 @@
 #include <cstdlib>
 
 #include "algorithms/registry.hpp"
+#include "core/text.hpp"
 #include "studio.hpp"
 
 namespace rise::studio {
@@ -19,13 +20,6 @@ bool openInBrowser(const std::filesystem::path& page) {
   for (char c : page.string()) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
   quoted += "'";
   return std::system(("xdg-open " + quoted + " >/dev/null 2>&1 &").c_str()) == 0;
-}
-
-template <typename Names>
-std::string joined(const Names& names) {
-  std::string text;
-  for (const auto& name : names) text += (text.empty() ? "" : ", ") + std::string(name);
-  return text;
 }
 
 }  // namespace

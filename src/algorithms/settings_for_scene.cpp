@@ -2,8 +2,11 @@
 
 #include <cmath>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "core/parallel.hpp"
+#include "core/text.hpp"
 #include "ray/accelerator.hpp"
 
 namespace rise {
@@ -29,10 +32,9 @@ PixelSampling pixelSampling(const ImageOverrides& image, const PixelSampling& sc
 }
 
 std::string availableAccelNames() {
-  std::string names;
-  for (Accel accel : availableAccels())
-    names += (names.empty() ? "" : ", ") + std::string(accelName(accel));
-  return names;
+  std::vector<std::string_view> names;
+  for (Accel accel : availableAccels()) names.push_back(accelName(accel));
+  return joined(names);
 }
 
 }  // namespace

@@ -23,4 +23,19 @@ inline std::string lowercaseExtension(const std::filesystem::path& path) {
   return lowercase(path.extension().string());
 }
 
+// Adds `item` to the end of the list in `text`, after `separator` unless
+// the list is empty.
+inline void appendListed(std::string& text, std::string_view separator, std::string_view item) {
+  if (!text.empty()) text += separator;
+  text += item;
+}
+
+// The names one after another, `separator` between each two: "a, b, c".
+template <typename Names>
+std::string joined(const Names& names, std::string_view separator = ", ") {
+  std::string text;
+  for (const auto& name : names) appendListed(text, separator, name);
+  return text;
+}
+
 }  // namespace rise

@@ -35,7 +35,7 @@ std::optional<Projection> projectionNamed(const std::string& name) {
 // "mapping: {cylindrical: {axis: [0, 0, 1]}}".
 Mapping readTurningMapping(const Field& field) {
   const std::string expectation =
-      "a mapping (" + joinedWithCommas(mappingNames()) +
+      "a mapping (" + joined(mappingNames()) +
       "), or a map {spherical: {axis: [x, y, z]}} or {cylindrical: {axis: [x, y, z]}}";
   if (field.node.size() != 1) failExpected(field, expectation);
   const MapEntry entry = readMap(field, expectation, field.name).front();

@@ -122,8 +122,8 @@ std::shared_ptr<const Texture> readTexture(const Field& field, SceneFiles& files
     }
   }
   if (given.size() != 1)
-    failAt(map.mark(), "texture needs exactly one of " + joinedWithCommas(kinds) + "; got " +
-                           (given.empty() ? "none" : joinedWithCommas(givenKinds)));
+    failAt(map.mark(), "texture needs exactly one of " + joined(kinds) + "; got " +
+                           (given.empty() ? "none" : joined(givenKinds)));
   if (givenKinds[0] == "image") return readImageTexture(map, given[0], files, encoding);
   for (const std::string_view key : {"filter", "scale", "offset", "rotate"}) {
     if (const std::optional<Field> misplaced = map.optional(key))

@@ -34,7 +34,7 @@ std::string describeSequence(const YamlNode& node) {
     if (!item.isScalar()) break;
     items.push_back(describeScalar(item));
   }
-  const std::string bracketed = std::string("[").append(joinedWithCommas(items)).append("]");
+  const std::string bracketed = std::string("[").append(joined(items)).append("]");
   if (items.size() == node.size() && bracketed.size() <= kLongestValueShown) return bracketed;
   return node.size() == 1 ? "a list of 1 item"
                           : "a list of " + std::to_string(node.size()) + " items";
@@ -46,8 +46,7 @@ std::string describeMap(const YamlNode& node) {
   std::vector<std::string> keys;
   for (const auto& entry : node.entries())
     keys.push_back(entry.first.isScalar() ? entry.first.scalar() : "?");
-  return (keys.size() == 1 ? "a map with the key " : "a map with the keys ") +
-         joinedWithCommas(keys);
+  return (keys.size() == 1 ? "a map with the key " : "a map with the keys ") + joined(keys);
 }
 
 // The optimal string alignment distance: the Levenshtein edit distance with
@@ -117,12 +116,6 @@ std::string shortNumber(double value) {
   return written;
 }
 
-std::string joinedWithCommas(const std::vector<std::string>& words) {
-  std::string text;
-  for (const std::string& word : words) text += (text.empty() ? "" : ", ") + word;
-  return text;
-}
-
 Field makeField(const YamlNode& node, std::string name, Mark keyMark) {
   return Field{node, std::move(name), node.isNull() ? keyMark : node.mark()};
 }
@@ -163,7 +156,7 @@ std::string suggestAlternative(std::string_view word, const std::vector<std::str
   // "radus" is "radius", but "n" is not "ks".
   if (best && 2 * bestDistance <= std::max(word.size(), best->size()))
     return "did you mean " + singleQuoted(*best) + "?";
-  return "expected one of: " + joinedWithCommas(candidates);
+  return "expected one of: " + joined(candidates);
 }
 
 float readNumber(const Field& field, Bound bound) {
@@ -262,7 +255,7 @@ std::vector<MapEntry> readMap(const Field& field, std::string_view expectation,
 CheckedMap::CheckedMap(const Field& field, std::string name, std::vector<std::string> allowedKeys)
     : name_(std::move(name)),
       mark_(field.mark),
-      entries_(readMap(field, "a map with the keys " + joinedWithCommas(allowedKeys), name_)) {
+      entries_(readMap(field, "a map with the keys " + joined(allowedKeys), name_)) {
   for (const MapEntry& entry : entries_) {
     if (std::find(allowedKeys.begin(), allowedKeys.end(), entry.key) == allowedKeys.end())
       failAt(entry.keyMark, "unknown key " + singleQuoted(entry.key) + " in " + name_ + "; " +
@@ -287,8 +280,7 @@ std::optional<Field> CheckedMap::optional(std::string_view key) const {
 MapEntry readKindAndProperties(const Field& item, std::string_view kindWord,
                                const std::vector<std::string>& kinds) {
   const std::string expectation = "a map with one key naming the " + std::string(kindWord) + " (" +
-                                  joinedWithCommas(kinds) +
-                                  ") and its properties indented under it";
+                                  joined(kinds) + ") and its properties indented under it";
   if (!item.node.isMap() || item.node.size() != 1) failExpected(item, expectation);
   const MapEntry entry = readMap(item, expectation, item.name).front();
   if (std::find(kinds.begin(), kinds.end(), entry.key) == kinds.end())

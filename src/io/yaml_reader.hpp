@@ -15,6 +15,7 @@
 
 #include "core/color.hpp"
 #include "core/math.hpp"
+#include "core/text.hpp"
 #include "io/yaml_document.hpp"
 
 namespace rise {
@@ -49,9 +50,6 @@ Field makeField(const YamlNode& node, std::string name, Mark keyMark);
 
 // A number as people write it: "0.1", "1.7e30".
 std::string shortNumber(double value);
-
-// "a, b, c".
-std::string joinedWithCommas(const std::vector<std::string>& words);
 
 // How a value looks to the person who wrote it: "'abc'", "a list of 2 items",
 // "nothing"...

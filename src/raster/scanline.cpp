@@ -45,6 +45,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/text.hpp"
 #include "raster/active_edges.hpp"
 #include "raster/bands.hpp"
 #include "raster/transparency.hpp"
@@ -243,7 +244,7 @@ class BandSweep {
       std::string blended, dropped;
       lineLayers_.forEachLayer(x, lineInverseDepth_[x], [&](int face, bool inFront) {
         std::string& list = inFront ? blended : dropped;
-        list += (list.empty() ? "" : " ") + std::to_string(sceneFaceOf(face));
+        appendListed(list, " ", std::to_string(sceneFaceOf(face)));
       });
       return std::pair(blended, dropped);
     };

@@ -42,6 +42,7 @@
 #include <tuple>
 #include <utility>
 
+#include "core/text.hpp"
 #include "raster/bands.hpp"
 
 namespace rise {
@@ -236,7 +237,7 @@ StepTable ShadowVolumes::BandCount::countsTable() const {
     int end = x + 1;
     while (end < volumes_.width_ && countsAt(end) == counts) ++end;
     std::string text;
-    for (int count : counts) text += (text.empty() ? "" : " ") + std::to_string(count);
+    for (int count : counts) appendListed(text, " ", std::to_string(count));
     runs.rows.push_back({static_cast<double>(x), static_cast<double>(end - 1), text});
     x = end;
   }

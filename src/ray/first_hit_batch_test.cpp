@@ -46,7 +46,9 @@ TEST(FirstHitBatch, ShadesEachHitAsShadeFirstHitDoes) {
         ASSERT_EQ(actual.color, expected.color) << "row " << y << ", hit " << i;
         EXPECT_EQ(actual.depth, expected.depth);
         EXPECT_EQ(actual.normal, expected.normal);
-        if (maxDepth == 1) EXPECT_EQ(batch.sentShadowRays(i), one.shadowRays > 0);
+        if (maxDepth == 1) {
+          EXPECT_EQ(batch.sentShadowRays(i), one.shadowRays > 0);
+        }
         // A hit's shadow rays' costs are its own: none where it sent none.
         EXPECT_EQ(batch.shadowRayCosts(i).tests > 0, batch.sentShadowRays(i));
         hitsWithoutShadowRays += batch.sentShadowRays(i) ? 0 : 1;

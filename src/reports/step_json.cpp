@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/text.hpp"
+
 namespace rise {
 namespace {
 
@@ -161,9 +163,7 @@ std::string stepsJson(const StepsHeader& header, const std::vector<std::string>&
                       header.region->height()};
   // The steps are already JSON: splice them in rather than parse them again.
   std::string text = json.dump();
-  std::string joined;
-  for (const std::string& step : steps) joined += (joined.empty() ? "" : ",\n") + step;
-  text.replace(text.rfind("[]"), 2, "[\n" + joined + "\n]");
+  text.replace(text.rfind("[]"), 2, "[\n" + joined(steps, ",\n") + "\n]");
   return text;
 }
 
