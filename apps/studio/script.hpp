@@ -90,7 +90,6 @@ class Script {
   bool failed_ = false;
   std::vector<InputFrame> input_;  // the frames still to feed, the next last
   ImVec2 pointer_{-1.0f, -1.0f};
-  bool keyHeld_ = false;
   int heldKey_ = -1;
   std::optional<std::chrono::steady_clock::time_point> waitingSince_;
   std::chrono::steady_clock::time_point lastFrame_;
