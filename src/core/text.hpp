@@ -1,4 +1,5 @@
-// Small text helpers that readers and writers of files share.
+// Small text helpers: names matched regardless of case, and lists of names
+// as messages and steps show them.
 #pragma once
 
 #include <algorithm>
