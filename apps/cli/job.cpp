@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "algorithms/registry.hpp"
+#include "core/text.hpp"
 #include "io/scene_error.hpp"
 #include "progress_bar.hpp"
 #include "render/render_limits.hpp"

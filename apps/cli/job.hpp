@@ -9,7 +9,6 @@
 #include <variant>
 #include <vector>
 
-#include "core/text.hpp"
 #include "output_check.hpp"
 #include "render/renderer.hpp"
 #include "settings_options.hpp"

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "algorithms/registry.hpp"
+#include "core/text.hpp"
 #include "io/scene_error.hpp"
 #include "job.hpp"
 #include "render/buffer_images.hpp"

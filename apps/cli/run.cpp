@@ -14,6 +14,7 @@
 #include "algorithms/registry.hpp"
 #include "animation.hpp"
 #include "compare.hpp"
+#include "core/text.hpp"
 #include "job.hpp"
 #include "look_inside.hpp"
 #include "manual_command.hpp"

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "core/text.hpp"
 #include "io/scene_file.hpp"
 #include "job.hpp"
 #include "render/render_limits.hpp"

@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <utility>
 
+#include "core/text.hpp"
 #include "studio.hpp"
 
 namespace rise::studio {
@@ -53,9 +54,9 @@ std::string spelt(float value) {
 }
 
 std::string spelt(const float* values, int count) {
-  std::string text = "[";
-  for (int i = 0; i < count; ++i) text += (i > 0 ? ", " : "") + spelt(values[i]);
-  return text + "]";
+  std::string text;
+  for (int i = 0; i < count; ++i) appendListed(text, ", ", spelt(values[i]));
+  return "[" + text + "]";
 }
 
 // Keys whose three numbers are a colour, shown with a colour picker.

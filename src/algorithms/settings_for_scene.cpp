@@ -2,8 +2,6 @@
 
 #include <cmath>
 #include <string>
-#include <string_view>
-#include <vector>
 
 #include "core/parallel.hpp"
 #include "core/text.hpp"
@@ -32,9 +30,9 @@ PixelSampling pixelSampling(const ImageOverrides& image, const PixelSampling& sc
 }
 
 std::string availableAccelNames() {
-  std::vector<std::string_view> names;
-  for (Accel accel : availableAccels()) names.push_back(accelName(accel));
-  return joined(names);
+  std::string names;
+  for (Accel accel : availableAccels()) appendListed(names, ", ", accelName(accel));
+  return names;
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/text.hpp"
+
 namespace rise {
 
 namespace {

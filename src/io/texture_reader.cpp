@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/text.hpp"
 #include "io/image_io.hpp"
 #include "scene/textures/image_texture.hpp"
 #include "scene/textures/noise_texture.hpp"

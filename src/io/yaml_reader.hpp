@@ -15,7 +15,6 @@
 
 #include "core/color.hpp"
 #include "core/math.hpp"
-#include "core/text.hpp"
 #include "io/yaml_document.hpp"
 
 namespace rise {
