@@ -21,11 +21,12 @@ still=("$examples/soft-shadows.yaml" --width 61 --height 45 --samples 4 --filter
 "${ranks[@]}" "$rise_mpi" render "${still[@]}" --tile-size 13 -o "$work/ranks.exr"
 cmp "$work/alone.exr" "$work/ranks.exr" || fail "the tiles gathered differ from the image alone"
 
-# The counters of two --stats files, the times aside, as "name value" lines.
+# The counters of two --stats files, as "name value" lines: the times aside,
+# and the BVH's subtrees, which each rank builds as its own rays reach them.
 counters() {
   python3 -c 'import json, re, sys
 for name, value in json.load(open(sys.argv[1])).items():
-    if not re.search(r"seconds?$", name): print(name, value)' "$1"
+    if not re.search(r"seconds?$|^bvh_subtrees_", name): print(name, value)' "$1"
 }
 
 # The ray tracer renders a tile's own pixels: with a box filter and tiles of

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/stats.hpp"
 #include "render/render_settings.hpp"
 #include "scene/shape.hpp"
 
@@ -83,6 +84,9 @@ class Accelerator {
   virtual void visitCrossingsOfPacket(
       ShadowRayPacket& packet, float tMin,
       const std::array<CrossingVisitor*, kPacketSize>& visitors) const;
+
+  // Adds what the structure has to tell of itself after a render.
+  virtual void addStats(Stats& /*stats*/) const {}
 };
 
 // Whether the ray meets `shape` at some t in (tMin, tMax): what the

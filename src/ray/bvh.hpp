@@ -16,6 +16,17 @@
 // (for a mesh, its vertex indices and the edges' subtractions too); other
 // primitives are tested by their shapes.
 //
+// Built lazily (W. Hunt, W. R. Mark and D. Fussell, "Fast and Lazy Build of
+// Acceleration Structures from Scene Hierarchies", IEEE Symposium on
+// Interactive Ray Tracing, 2007). The rays of a render may reach a small
+// part of a large mesh: a camera sees one side of it, and the hybrid's rays
+// only what its mirrors and shadows need. So the build stops at subtrees of
+// a few thousand primitives, only gathering each one's primitives together;
+// what it does build, the splits above them, is the part that sorts every
+// primitive at each level. A subtree is built, the same as it would have
+// been at once, the first time a ray enters its box, by that ray's thread,
+// while the other rays that reach it meanwhile wait.
+//
 // Traversal goes nearest child first: at an inner node the ray tests the
 // four children's boxes (slab test, with the ray's inverse direction
 // computed once), enters the nearest it meets and keeps the others on a
@@ -33,6 +44,8 @@
 #pragma once
 
 #include <array>
+#include <atomic>
+#include <mutex>
 #include <span>
 
 #include "core/left_unfilled.hpp"
@@ -78,10 +91,31 @@ class Bvh final : public Accelerator {
       ShadowRayPacket& packet, float tMin,
       const std::array<CrossingVisitor*, kPacketSize>& visitors) const override;
 
-  std::span<const WideBvhNode> nodes() const { return nodes_; }
+  // "bvh_subtrees_deferred", the subtrees the build left for the rays, and
+  // "bvh_subtrees_built", those of them that rays reached.
+  void addStats(Stats& stats) const override;
+
+  // The nodes built so far, the root first.
+  std::span<const WideBvhNode> nodes() const { return {nodes_.get(), nodeCount_.load()}; }
   std::span<const LeafPrimitive> primitives() const { return primitives_; }
+  // The root node of the child that a node's slot marks kUnbuiltSubtree, its
+  // offset `unbuilt`, built first if no ray has reached it yet.
+  std::uint32_t subtreeRoot(std::uint32_t unbuilt) const;
+  // Builds every subtree no ray has reached yet, on `threads` threads: the
+  // whole tree, as the build would have made it at once.
+  void buildEverySubtree(int threads) const;
 
  private:
+  struct UnbuiltChild {
+    UnbuiltSubtree primitives;
+    std::once_flag built;
+    std::uint32_t root = 0;  // its node, once built
+  };
+
+  // Builds the subtree, puts its nodes after those built so far and fills
+  // its leaf primitives; returns its root.
+  std::uint32_t build(const UnbuiltSubtree& subtree) const;
+  void fillLeafPrimitives(std::uint32_t begin, std::uint32_t end) const;
   // Walks the boxes that the ray meets at t in (tMin, tMax), nearest first,
   // calling visitLeaf(firstPrimitive, primitiveCount) at each leaf until it
   // returns false. tMax may
@@ -110,8 +144,20 @@ class Bvh final : public Accelerator {
 
   std::vector<const Shape*> shapes_;
   std::vector<int> unbounded_;  // the shapes outside the tree
-  std::vector<WideBvhNode> nodes_;
-  UnfilledVector<LeafPrimitive> primitives_;  // in leaf order, filled by the workers
+  // The rest grows as rays reach the unbuilt subtrees, which makes no
+  // difference to any ray: a subtree is the same whenever it is built.
+  // What the subtrees are built from, in leaf order where built.
+  mutable UnfilledVector<BuildPrimitive> buildPrimitives_;
+  // Room for every node the tree can have, whose pages are brought in as
+  // they are filled; nodeCount_ counts those taken.
+  std::unique_ptr<WideBvhNode[]> nodes_;
+  mutable std::atomic<std::uint32_t> nodeCount_{0};
+  mutable std::mutex growing_;  // taken to add nodes
+  std::unique_ptr<UnbuiltChild[]> unbuilt_;
+  std::uint32_t unbuiltCount_ = 0;
+  mutable std::atomic<std::uint32_t> builtCount_{0};
+  // In leaf order, filled by the workers, and a subtree's by its builder.
+  mutable UnfilledVector<LeafPrimitive> primitives_;
 };
 
 }  // namespace rise

@@ -4,6 +4,7 @@
 #include <array>
 #include <atomic>
 #include <cstring>
+#include <mutex>
 #include <thread>
 
 namespace rise {
@@ -142,20 +143,21 @@ struct Range {
 
 class Builder {
  public:
-  Builder(UnfilledVector<BuildPrimitive>& primitives, int threads)
+  // Builds the subtree of the primitives [begin, end), whose root is `depth`
+  // nodes below the whole tree's.
+  Builder(std::span<BuildPrimitive> primitives, std::uint32_t begin, std::uint32_t end, int depth,
+          int threads, std::uint32_t unbuiltAtMost)
       : primitives_(primitives),
-        nodes_(std::make_unique_for_overwrite<BvhNode[]>(2 * primitives.size() - 1)),
-        spareThreads_(threads - 1) {}
+        begin_(begin),
+        end_(end),
+        depth_(depth),
+        nodes_(std::make_unique_for_overwrite<BvhNode[]>(2 * std::size_t{end - begin} - 1)),
+        spareThreads_(threads - 1),
+        unbuiltAtMost_(unbuiltAtMost) {}
 
   BuiltBvh run() {
-    Range all{0, static_cast<std::uint32_t>(primitives_.size()), {}, {}};
-    for (const BuildPrimitive& primitive : primitives_) {
-      all.box.grow(loadLower(primitive), loadUpper(primitive));
-      const Float4 centroid = centroidOf(primitive);
-      all.centroids.grow(centroid, centroid);
-    }
-    build(0, all, 1);
-    return {std::move(nodes_), nodeCount_.load(), std::move(primitives_)};
+    build(0, rangeOf(begin_, end_), depth_);
+    return {std::move(nodes_), nodeCount_.load(), std::move(unbuilt_)};
   }
 
  private:
@@ -164,6 +166,7 @@ class Builder {
     nodes_[node].box = range.box.bounds();
     const std::uint32_t count = range.count();
     if (count == 1 || depth == kMaxBvhDepth) return makeLeaf(node, range);
+    if (node != 0 && count <= unbuiltAtMost_) return leaveUnbuilt(node, range, depth);
 
     const Binning binning(range.centroids);
     const Split split = bestSplit(range, binning);
@@ -320,6 +323,13 @@ class Builder {
     nodes_[node].primitiveCount = range.count();
   }
 
+  void leaveUnbuilt(std::uint32_t node, const Range& range, int depth) {
+    const std::lock_guard lock(unbuiltMutex_);
+    nodes_[node].offset = static_cast<std::uint32_t>(unbuilt_.size());
+    nodes_[node].primitiveCount = kUnbuiltSubtree;
+    unbuilt_.push_back({range.begin, range.end, depth});
+  }
+
   // Takes up to `wanted` of the threads not working now; returns how many.
   int takeSpareThreads(int wanted) {
     int spare = spareThreads_.load();
@@ -330,17 +340,29 @@ class Builder {
     return taken;
   }
 
-  UnfilledVector<BuildPrimitive>& primitives_;
+  std::span<BuildPrimitive> primitives_;
+  const std::uint32_t begin_;
+  const std::uint32_t end_;
+  const int depth_;
   std::unique_ptr<BvhNode[]> nodes_;
   std::atomic<std::uint32_t> nodeCount_{1};  // the root
   std::atomic<int> spareThreads_;
+  const std::uint32_t unbuiltAtMost_;
+  std::mutex unbuiltMutex_;
+  std::vector<UnbuiltSubtree> unbuilt_;
 };
 
 }  // namespace
 
-BuiltBvh buildBvh(UnfilledVector<BuildPrimitive> primitives, int threads) {
+BuiltBvh buildBvh(std::span<BuildPrimitive> primitives, int threads, std::uint32_t unbuiltAtMost) {
   if (primitives.empty()) return {};
-  return Builder(primitives, std::max(threads, 1)).run();
+  return Builder(primitives, 0, static_cast<std::uint32_t>(primitives.size()), 1,
+                 std::max(threads, 1), unbuiltAtMost)
+      .run();
+}
+
+BuiltBvh buildSubtree(std::span<BuildPrimitive> primitives, const UnbuiltSubtree& subtree) {
+  return Builder(primitives, subtree.begin, subtree.end, subtree.depth, 1, 0).run();
 }
 
 }  // namespace rise

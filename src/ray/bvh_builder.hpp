@@ -19,6 +19,11 @@
 //
 // Large nodes are binned by all the threads at once, each binning a share
 // of the primitives; large subtrees are built on threads of their own.
+//
+// A subtree may also be left unbuilt, its primitives only gathered in a run
+// of their own, for whoever needs it first to build (bvh.hpp): the splits
+// above it, and so its primitives, are the same whenever it is built, and
+// so is the subtree.
 #pragma once
 
 #include <bit>
@@ -38,6 +43,10 @@ struct PrimitiveRef {
   std::uint32_t primitive;
 };
 
+// The primitive count of a node whose subtree was left unbuilt; its offset
+// indexes BuiltBvh::unbuilt.
+inline constexpr std::uint32_t kUnbuiltSubtree = 0xffffffff;
+
 // One node of the binary hierarchy: an inner node's children are the nodes
 // offset and offset + 1.
 struct BvhNode {
@@ -45,6 +54,7 @@ struct BvhNode {
   std::uint32_t offset;          // a leaf's first primitive, an inner node's first child
   std::uint32_t primitiveCount;  // 0 for an inner node
 
+  // A leaf, or a subtree left unbuilt: a node whose children are not here.
   bool isLeaf() const { return primitiveCount > 0; }
 };
 
@@ -73,17 +83,32 @@ struct alignas(16) BuildPrimitive {
 // pending nodes in a fixed array.
 inline constexpr int kMaxBvhDepth = 64;
 
+// The primitives [begin, end), sorted into a run of their own by the splits
+// above them, whose subtree is `depth` nodes below the root.
+struct UnbuiltSubtree {
+  std::uint32_t begin;
+  std::uint32_t end;
+  int depth;
+};
+
 struct BuiltBvh {
   // The root first; none when there were no primitives. Left uninitialised
   // when allocated, so that the threads that fill them bring in their pages.
   std::unique_ptr<BvhNode[]> nodeStorage;
   std::size_t nodeCount = 0;
-  UnfilledVector<BuildPrimitive> primitives;  // in leaf order: a leaf's are contiguous
+  std::vector<UnbuiltSubtree> unbuilt;  // the subtrees left unbuilt, in no order
 
   std::span<const BvhNode> nodes() const { return {nodeStorage.get(), nodeCount}; }
 };
 
-// Builds the hierarchy on up to `threads` threads.
-BuiltBvh buildBvh(UnfilledVector<BuildPrimitive> primitives, int threads);
+// Builds the hierarchy of `primitives` on up to `threads` threads, ordering
+// them so that a leaf's are contiguous. The subtrees below the root of at
+// most `unbuiltAtMost` primitives are left unbuilt.
+BuiltBvh buildBvh(std::span<BuildPrimitive> primitives, int threads,
+                  std::uint32_t unbuiltAtMost = 0);
+
+// Builds, on the calling thread, a subtree that buildBvh left unbuilt, of
+// the same primitives; its nodes' indices count from its root, 0.
+BuiltBvh buildSubtree(std::span<BuildPrimitive> primitives, const UnbuiltSubtree& subtree);
 
 }  // namespace rise

@@ -147,14 +147,23 @@ void prefetchTwoLines(const void* memory) {
 // tMin; lanes past `traversing` reach no box. Each lane's boxes tested are
 // added to its cost.
 template <bool kNearestFirst, typename VisitLeaf>
-void walkPacket(std::span<const WideBvhNode> nodes, std::span<const Bvh::LeafPrimitive> primitives,
-                const BoxPacket& boxes, unsigned traversing, float tMin, EightFloats& tMax,
-                std::array<IntersectionCounters, kPacketSize>& costs, VisitLeaf&& visitLeaf) {
+void walkPacket(const Bvh& bvh, const BoxPacket& boxes, unsigned traversing, float tMin,
+                EightFloats& tMax, std::array<IntersectionCounters, kPacketSize>& costs,
+                VisitLeaf&& visitLeaf) {
+  // Where the nodes are, the built and those still to be: the count of
+  // nodes() grows as subtrees are built.
+  const WideBvhNode* const nodes = bvh.nodes().data();
+  const std::span<const Bvh::LeafPrimitive> primitives = bvh.primitives();
   EightInts boxesTested{};
   PendingChildren<PendingPacketChild> pending;
   PendingPacketChild current{0, 0, traversing, tMin};  // the root
   while (true) {
     if (current.primitiveCount > 0) {
+      if (current.primitiveCount == kUnbuiltSubtree) {
+        current.offset = bvh.subtreeRoot(current.offset);
+        current.primitiveCount = 0;
+        continue;
+      }
       for (unsigned lanes = current.lanes; lanes != 0; lanes &= lanes - 1) {
         const int lane = std::countr_zero(lanes);
         if (tMax[lane] >= tMin)
@@ -172,11 +181,12 @@ void walkPacket(std::span<const WideBvhNode> nodes, std::span<const Bvh::LeafPri
         const unsigned lanes = lanesMet(entries);
         if (lanes == 0) continue;
         const std::uint32_t offset = node.offset[child];
-        prefetchTwoLines(node.primitiveCount[child] == 0
-                             ? static_cast<const void*>(&nodes[offset])
-                             : static_cast<const void*>(&primitives[offset]));
-        pending.push({offset, node.primitiveCount[child], lanes,
-                      kNearestFirst ? nearestEntry(entries) : tMin});
+        const std::uint32_t primitiveCount = node.primitiveCount[child];
+        if (primitiveCount == 0)
+          prefetchTwoLines(&nodes[offset]);
+        else if (primitiveCount != kUnbuiltSubtree)
+          prefetchTwoLines(&primitives[offset]);
+        pending.push({offset, primitiveCount, lanes, kNearestFirst ? nearestEntry(entries) : tMin});
       }
     }
     // The next kept child that some of its rays' hits since leave in reach.
@@ -199,11 +209,11 @@ void Bvh::nearestOfPacket(RayPacket& packet, float tMin) const {
     nearest[lane] = NearestHit(packet.hits[lane]);
     packet.found[lane] = offerUnbounded(packet.rays[lane], tMin, nearest[lane], packet.costs[lane]);
     tMax[lane] = packet.hits[lane].t;
-    if (!nodes_.empty() && isFinite(packet.rays[lane])) traversing |= 1u << lane;
+    if (!primitives_.empty() && isFinite(packet.rays[lane])) traversing |= 1u << lane;
   }
   if (traversing == 0) return;
-  walkPacket<true>(nodes_, primitives_, BoxPacket(packet.rays, packet.size), traversing, tMin, tMax,
-                   packet.costs, [&](std::uint32_t first, std::uint32_t count, int lane) {
+  walkPacket<true>(*this, BoxPacket(packet.rays, packet.size), traversing, tMin, tMax, packet.costs,
+                   [&](std::uint32_t first, std::uint32_t count, int lane) {
                      packet.found[lane] |= offerLeaf(first, count, packet.rays[lane], tMin,
                                                      nearest[lane], packet.costs[lane]);
                      return packet.hits[lane].t;
@@ -224,11 +234,11 @@ void Bvh::visitCrossingsOfPacket(ShadowRayPacket& packet, float tMin,
     if (!crossUnbounded(ray, tMin, packet.tMax[lane], *visitors[lane], packet.costs[lane]))
       continue;
     tMax[lane] = packet.tMax[lane];
-    if (!nodes_.empty() && isFinite(ray)) traversing |= 1u << lane;
+    if (!primitives_.empty() && isFinite(ray)) traversing |= 1u << lane;
   }
   if (traversing == 0) return;
-  walkPacket<false>(nodes_, primitives_, BoxPacket(packet.rays, packet.size), traversing, tMin,
-                    tMax, packet.costs, [&](std::uint32_t first, std::uint32_t count, int lane) {
+  walkPacket<false>(*this, BoxPacket(packet.rays, packet.size), traversing, tMin, tMax,
+                    packet.costs, [&](std::uint32_t first, std::uint32_t count, int lane) {
                       const bool goesOn =
                           crossLeaf(first, count, packet.rays[lane], tMin, packet.tMax[lane],
                                     *visitors[lane], packet.costs[lane]);

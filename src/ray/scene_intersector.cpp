@@ -82,6 +82,7 @@ std::array<Color, kPacketSize> SceneIntersector::transmittanceOfPacket(ShadowRay
 
 void SceneIntersector::addBuildStats(Stats& stats) const {
   stats.add("accel_build_seconds", buildSeconds_);
+  accelerator_->addStats(stats);
 }
 
 }  // namespace rise

@@ -40,7 +40,9 @@ class SceneIntersector {
   // transmittance() finds it; each ray's cost in the packet's.
   std::array<Color, kPacketSize> transmittanceOfPacket(ShadowRayPacket& packet, float tMin) const;
 
-  // "accel_build_seconds": how long building the structure took.
+  // "accel_build_seconds": how long building the structure took (what the
+  // BVH builds at once: it leaves subtrees for the rays to build), and what
+  // the structure tells of itself after the render.
   void addBuildStats(Stats& stats) const;
 
  private:

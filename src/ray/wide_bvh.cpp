@@ -24,7 +24,8 @@ void setChildBox(WideBvhNode& node, int child, const Bounds3& box) {
 
 class Collapser {
  public:
-  explicit Collapser(std::span<const BvhNode> binary) : binary_(binary) {
+  Collapser(std::span<const BvhNode> binary, std::uint32_t firstIndex)
+      : binary_(binary), firstIndex_(firstIndex) {
     // No more wide nodes than binary inner nodes: the vector never moves
     // (pages reserved but not filled cost nothing).
     wide_.reserve(binary.size() / 2 + 1);
@@ -85,13 +86,15 @@ class Collapser {
       // below grows wide_ and may move it.
       setChildBox(wide_[index], lane, child.box);
       wide_[index].primitiveCount[lane] = child.primitiveCount;
-      const std::uint32_t offset = child.isLeaf() ? child.offset : collapse(children[slot]);
+      const std::uint32_t offset =
+          child.isLeaf() ? child.offset : firstIndex_ + collapse(children[slot]);
       wide_[index].offset[lane] = offset;
     }
     return index;
   }
 
   std::span<const BvhNode> binary_;
+  const std::uint32_t firstIndex_;
   std::vector<WideBvhNode> wide_;
 };
 
@@ -113,8 +116,8 @@ Bounds3 WideBvhNode::childBox(int child) const {
   return box;
 }
 
-std::vector<WideBvhNode> collapseBvh(std::span<const BvhNode> binary) {
-  return Collapser(binary).run();
+std::vector<WideBvhNode> collapseBvh(std::span<const BvhNode> binary, std::uint32_t firstIndex) {
+  return Collapser(binary, firstIndex).run();
 }
 
 }  // namespace rise

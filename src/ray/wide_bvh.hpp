@@ -32,9 +32,11 @@ struct alignas(64) WideBvhNode {
   // empty box (lower +infinity, upper -infinity), which no ray enters.
   float lower[3][kWideBvhWidth];
   float upper[3][kWideBvhWidth];
-  // An inner child's node, or a leaf child's first primitive.
+  // An inner child's node, or a leaf child's first primitive, or the index
+  // of an unbuilt child among the builder's unbuilt subtrees.
   std::uint32_t offset[kWideBvhWidth];
-  // A leaf child's number of primitives; 0 for an inner child or an empty slot.
+  // A leaf child's number of primitives; 0 for an inner child or an empty
+  // slot; kUnbuiltSubtree for a child not built yet.
   std::uint32_t primitiveCount[kWideBvhWidth];
 
   int childCount() const;
@@ -43,7 +45,9 @@ struct alignas(64) WideBvhNode {
 static_assert(sizeof(WideBvhNode) == 128, "two cache lines");
 
 // The four-wide tree of a binary one, its root first: a binary tree that is a
-// single leaf becomes a root with one child. Empty when `binary` is.
-std::vector<WideBvhNode> collapseBvh(std::span<const BvhNode> binary);
+// single leaf becomes a root with one child. Empty when `binary` is. Its
+// inner children's indices count from `firstIndex`, where its root will be.
+// An unbuilt subtree stays one, a child as a leaf is.
+std::vector<WideBvhNode> collapseBvh(std::span<const BvhNode> binary, std::uint32_t firstIndex = 0);
 
 }  // namespace rise
