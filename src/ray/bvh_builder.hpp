@@ -33,7 +33,6 @@
 #include <vector>
 
 #include "core/bounds.hpp"
-#include "core/left_unfilled.hpp"
 
 namespace rise {
 
