@@ -11,7 +11,9 @@
 // answer: shadows, mirrors, glass. (A BVH whose primary rays go down it in
 // packets finds the first hits for about as little as the scanline pass and
 // the item tests do, less on a million triangles or with many samples a
-// pixel: bench/README.md. The hybrid's lead is mostly in its shading, below.)
+// pixel: bench/README.md. The hybrid's lead is mostly in its shading, below,
+// and on a large mesh in the parts of the BVH that its rays never reach, and
+// that the BVH therefore never builds: bvh.hpp.)
 //   Pass 1, visibility by scanline: the scanline algorithm (scanline.cpp),
 //     sampling pixel centres where the primary rays pass, fills an item
 //     buffer: the polygon seen at each pixel, and so the object under it and,
