@@ -20,12 +20,12 @@
 // Acceleration Structures from Scene Hierarchies", IEEE Symposium on
 // Interactive Ray Tracing, 2007). The rays of a render may reach a small
 // part of a large mesh: a camera sees one side of it, and the hybrid's rays
-// only what its mirrors and shadows need. So the build stops at subtrees of
-// a few thousand primitives, only gathering each one's primitives together;
-// what it does build, the splits above them, is the part that sorts every
-// primitive at each level. A subtree is built, the same as it would have
-// been at once, the first time a ray enters its box, by that ray's thread,
-// while the other rays that reach it meanwhile wait.
+// only what its mirrors and shadows need. So the build of a larger tree
+// stops at subtrees of a few thousand primitives, only gathering each one's
+// primitives together; what it does build, the splits above them, is the
+// part that sorts every primitive at each level. A subtree is built, the
+// same as it would have been at once, the first time a ray enters its box,
+// by that ray's thread, while the other rays that reach it meanwhile wait.
 //
 // Traversal goes nearest child first: at an inner node the ray tests the
 // four children's boxes (slab test, with the ray's inverse direction

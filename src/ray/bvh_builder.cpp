@@ -166,7 +166,7 @@ class Builder {
     nodes_[node].box = range.box.bounds();
     const std::uint32_t count = range.count();
     if (count == 1 || depth == kMaxBvhDepth) return makeLeaf(node, range);
-    if (node != 0 && count <= unbuiltAtMost_) return leaveUnbuilt(node, range, depth);
+    if (count <= unbuiltAtMost_) return leaveUnbuilt(node, range, depth);
 
     const Binning binning(range.centroids);
     const Split split = bestSplit(range, binning);
@@ -356,8 +356,9 @@ class Builder {
 
 BuiltBvh buildBvh(std::span<BuildPrimitive> primitives, int threads, std::uint32_t unbuiltAtMost) {
   if (primitives.empty()) return {};
-  return Builder(primitives, 0, static_cast<std::uint32_t>(primitives.size()), 1,
-                 std::max(threads, 1), unbuiltAtMost)
+  const auto count = static_cast<std::uint32_t>(primitives.size());
+  return Builder(primitives, 0, count, 1, std::max(threads, 1),
+                 count > unbuiltAtMost ? unbuiltAtMost : 0)
       .run();
 }
 

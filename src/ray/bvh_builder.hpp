@@ -101,8 +101,11 @@ struct BuiltBvh {
 };
 
 // Builds the hierarchy of `primitives` on up to `threads` threads, ordering
-// them so that a leaf's are contiguous. The subtrees below the root of at
-// most `unbuiltAtMost` primitives are left unbuilt.
+// them so that a leaf's are contiguous. When there are more than
+// `unbuiltAtMost`, the subtrees of at most that many are left unbuilt: a
+// smaller tree is built whole, for a root over subtrees left unbuilt would
+// be a level more for every ray, where the four-wide root would have held
+// their children.
 BuiltBvh buildBvh(std::span<BuildPrimitive> primitives, int threads,
                   std::uint32_t unbuiltAtMost = 0);
 
