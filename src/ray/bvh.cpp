@@ -1,7 +1,6 @@
 #include "ray/bvh.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <bit>
 #include <cstdint>
 #include <cstring>
@@ -13,6 +12,7 @@
 #include <xmmintrin.h>
 #endif
 
+#include "core/parallel.hpp"
 #include "ray/bvh_traversal.hpp"
 #include "scene/shapes/sphere.hpp"
 #include "scene/shapes/triangle.hpp"
@@ -174,9 +174,8 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Shape>>& shapes, int threads) {
   nodes_ = std::make_unique_for_overwrite<WideBvhNode[]>(wideTop.size() + primitives_.size());
   std::copy(wideTop.begin(), wideTop.end(), nodes_.get());
   nodeCount_ = static_cast<std::uint32_t>(wideTop.size());
-  unbuiltCount_ = static_cast<std::uint32_t>(top.unbuilt.size());
-  unbuilt_ = std::make_unique<UnbuiltChild[]>(unbuiltCount_);
-  for (std::uint32_t i = 0; i < unbuiltCount_; ++i) unbuilt_[i].primitives = top.unbuilt[i];
+  unbuilt_ = std::vector<UnbuiltChild>(top.unbuilt.size());
+  for (std::size_t i = 0; i < unbuilt_.size(); ++i) unbuilt_[i].subtree = top.unbuilt[i];
   for (const BvhNode& node : top.nodes())
     if (node.isLeaf() && node.primitiveCount != kUnbuiltSubtree)
       fillLeafPrimitives(node.offset, node.offset + node.primitiveCount);
@@ -185,21 +184,16 @@ Bvh::Bvh(const std::vector<std::unique_ptr<Shape>>& shapes, int threads) {
 std::uint32_t Bvh::subtreeRoot(std::uint32_t unbuilt) const {
   UnbuiltChild& child = unbuilt_[unbuilt];
   std::call_once(child.built, [&] {
-    child.root = build(child.primitives);
+    child.root = build(child.subtree);
     ++builtCount_;
   });
   return child.root;
 }
 
 void Bvh::buildEverySubtree(int threads) const {
-  std::atomic<std::uint32_t> next{0};
-  const auto buildTheNext = [&] {
-    for (std::uint32_t unbuilt = next++; unbuilt < unbuiltCount_; unbuilt = next++)
-      subtreeRoot(unbuilt);
-  };
-  std::vector<std::jthread> helpers;
-  for (int helper = 1; helper < threads; ++helper) helpers.emplace_back(buildTheNext);
-  buildTheNext();
+  Workers(threads).forEachTask(static_cast<int>(unbuilt_.size()), [&](int unbuilt) {
+    subtreeRoot(static_cast<std::uint32_t>(unbuilt));
+  });
 }
 
 std::uint32_t Bvh::build(const UnbuiltSubtree& subtree) const {
@@ -221,7 +215,7 @@ void Bvh::fillLeafPrimitives(std::uint32_t begin, std::uint32_t end) const {
 }
 
 void Bvh::addStats(Stats& stats) const {
-  stats.add("bvh_subtrees_deferred", unbuiltCount_);
+  stats.add("bvh_subtrees_deferred", static_cast<double>(unbuilt_.size()));
   stats.add("bvh_subtrees_built", builtCount_.load());
 }
 

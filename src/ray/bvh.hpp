@@ -107,7 +107,7 @@ class Bvh final : public Accelerator {
 
  private:
   struct UnbuiltChild {
-    UnbuiltSubtree primitives;
+    UnbuiltSubtree subtree;
     std::once_flag built;
     std::uint32_t root = 0;  // its node, once built
   };
@@ -153,8 +153,7 @@ class Bvh final : public Accelerator {
   std::unique_ptr<WideBvhNode[]> nodes_;
   mutable std::atomic<std::uint32_t> nodeCount_{0};
   mutable std::mutex growing_;  // taken to add nodes
-  std::unique_ptr<UnbuiltChild[]> unbuilt_;
-  std::uint32_t unbuiltCount_ = 0;
+  mutable std::vector<UnbuiltChild> unbuilt_;
   mutable std::atomic<std::uint32_t> builtCount_{0};
   // In leaf order, filled by the workers, and a subtree's by its builder.
   mutable UnfilledVector<LeafPrimitive> primitives_;

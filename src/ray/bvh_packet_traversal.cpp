@@ -181,12 +181,13 @@ void walkPacket(const Bvh& bvh, const BoxPacket& boxes, unsigned traversing, flo
         const unsigned lanes = lanesMet(entries);
         if (lanes == 0) continue;
         const std::uint32_t offset = node.offset[child];
-        const std::uint32_t primitiveCount = node.primitiveCount[child];
-        if (primitiveCount == 0)
-          prefetchTwoLines(&nodes[offset]);
-        else if (primitiveCount != kUnbuiltSubtree)
-          prefetchTwoLines(&primitives[offset]);
-        pending.push({offset, primitiveCount, lanes, kNearestFirst ? nearestEntry(entries) : tMin});
+        // An unbuilt child's offset is a subtree's index: its prefetch only
+        // misses.
+        prefetchTwoLines(node.primitiveCount[child] == 0
+                             ? static_cast<const void*>(&nodes[offset])
+                             : static_cast<const void*>(&primitives[offset]));
+        pending.push({offset, node.primitiveCount[child], lanes,
+                      kNearestFirst ? nearestEntry(entries) : tMin});
       }
     }
     // The next kept child that some of its rays' hits since leave in reach.
