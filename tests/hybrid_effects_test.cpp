@@ -30,8 +30,8 @@ Scene example(const std::string& name) {
 Image tracedAlongThePass(const Scene& scene, const RenderSettings& settings,
                          const AccumulationPass& pass) {
   const SceneIntersector intersector(scene, settings.accel, 1);
-  const TracingContext context{scene, intersector, settings.maxDepth};
   const ViewFrame view(scene.camera, settings.width, settings.height);
+  const TracingContext context{scene, intersector, settings.maxDepth, view};
   Image image(settings.width, settings.height);
   TraceCounters counters;
   SingleRayChoices whitted;

@@ -16,6 +16,7 @@
 namespace rise {
 namespace {
 
+using shape_testing::expectTangentsMatchTheMapping;
 using shape_testing::expectUv;
 using shape_testing::intersect;
 using shape_testing::uvSeenAlong;
@@ -158,23 +159,6 @@ TEST(NaturalUv, CurvedSideTrianglesSpanOneSegmentOfU) {
       high = std::max(high, cylinder.vertices[corner].uv.x);
     }
     EXPECT_NEAR(high - low, 1.0f / 16.0f, 1e-5f);
-  }
-}
-
-// dP/du and dP/dv are the rates of change of the position with the texture
-// coordinates: a step along dP/du (back onto the surface) moves u alone.
-void expectTangentsMatchTheMapping(const Shape& shape, const Vec3& origin, const Vec3& direction) {
-  const auto at = intersect(shape, Ray{origin, direction});
-  ASSERT_TRUE(at.found);
-  const float step = 1e-3f;
-  for (int axis = 0; axis < 2; ++axis) {
-    const Vec3 tangent = axis == 0 ? at.surface.dpdu : at.surface.dpdv;
-    const Vec3 moved = at.surface.position + step * tangent;
-    const auto there = intersect(shape, Ray{moved + 0.1f * at.surface.normal, -at.surface.normal});
-    ASSERT_TRUE(there.found);
-    const Vec2 change = (there.surface.uv - at.surface.uv) / step;
-    EXPECT_NEAR(change[axis], 1.0f, 2e-2f) << "axis " << axis;
-    EXPECT_NEAR(change[1 - axis], 0.0f, 2e-2f) << "axis " << axis;
   }
 }
 

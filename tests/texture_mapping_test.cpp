@@ -31,6 +31,7 @@
 namespace rise {
 namespace {
 
+using shape_testing::expectTangentsMatchTheMapping;
 using shape_testing::expectUv;
 using shape_testing::intersect;
 using shape_testing::uSpan;
@@ -113,25 +114,6 @@ TEST(ProjectedMapping, BoxProjectsFromTheFaceTheSurfaceFacesMost) {
         Ray{Vec3(1.5f, 3, 1), Vec3(0, -1, 0)}})
     expectUv(uvSeenAlong(*mappedBox, ray.origin, ray.direction),
              uvSeenAlong(box, ray.origin, ray.direction));
-}
-
-// dP/du and dP/dv are the rates of change of the position with the mapping's
-// coordinates along the surface: a step along dP/du (back onto the surface)
-// moves u alone.
-void expectTangentsMatchTheMapping(const Shape& shape, const Vec3& origin, const Vec3& direction) {
-  const auto at = intersect(shape, Ray{origin, direction});
-  ASSERT_TRUE(at.found);
-  const float step = 1e-3f;
-  for (int axis = 0; axis < 2; ++axis) {
-    const Vec3 tangent = axis == 0 ? at.surface.dpdu : at.surface.dpdv;
-    const auto there = intersect(
-        shape,
-        Ray{at.surface.position + step * tangent + 0.1f * at.surface.normal, -at.surface.normal});
-    ASSERT_TRUE(there.found);
-    const Vec2 change = (there.surface.uv - at.surface.uv) / step;
-    EXPECT_NEAR(change[axis], 1.0f, 2e-2f) << "axis " << axis;
-    EXPECT_NEAR(change[1 - axis], 0.0f, 2e-2f) << "axis " << axis;
-  }
 }
 
 TEST(ProjectedMapping, TangentsAreTheDerivativesOfTheMappingAlongTheSurface) {

@@ -28,19 +28,12 @@ void addCompareOptions(CLI::App& command, CompareOptions& options) {
 }
 
 std::vector<const Renderer*> comparedRenderers(const CompareOptions& options) {
+  if (options.algorithms.empty()) return {allRenderers().begin(), allRenderers().end()};
   std::vector<const Renderer*> renderers;
   for (const Renderer* renderer : allRenderers())
-    if (options.algorithms.empty() ||
-        std::find(options.algorithms.begin(), options.algorithms.end(), renderer->name()) !=
-            options.algorithms.end())
+    if (std::ranges::find(options.algorithms, renderer->name()) != options.algorithms.end())
       renderers.push_back(renderer);
   return renderers;
-}
-
-std::vector<Family> familiesOf(const std::vector<const Renderer*>& renderers) {
-  std::vector<Family> families;
-  for (const Renderer* renderer : renderers) families.push_back(renderer->description().family);
-  return families;
 }
 
 std::variant<std::filesystem::path, int> comparisonFolder(const CompareOptions& options) {

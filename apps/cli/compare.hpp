@@ -30,7 +30,6 @@ void addCompareOptions(CLI::App& command, CompareOptions& options);
 std::vector<const Renderer*> comparedRenderers(const CompareOptions& options);
 
 // Their families, for the checks of the limits of a render.
-std::vector<Family> familiesOf(const std::vector<const Renderer*>& renderers);
 
 // The folder the comparison goes into, or the exit status of the message
 // printed when it, or a file in it, cannot be written, or when an algorithm

@@ -11,13 +11,13 @@
 namespace rise::cli {
 
 std::variant<Job, int> prepare(const SettingsOptions& options,
-                               const std::vector<Family>& families) {
+                               std::span<const Renderer* const> renderers) {
   Job job;
   try {
     job.scene = loadScene(options.scenePath);
     for (const std::string& warning : job.scene.warnings) std::cerr << warning << "\n";
     job.settings = settingsFor(job.scene, options.request);
-    for (Family family : families) checkRenderFits(job.scene, job.settings, family);
+    for (const Renderer* renderer : renderers) checkRenderFits(job.scene, job.settings, *renderer);
   } catch (const SceneError& error) {
     std::cerr << error.what() << "\n";
     return kExitBadInput;
@@ -26,6 +26,11 @@ std::variant<Job, int> prepare(const SettingsOptions& options,
     return kExitBadInput;
   }
   return job;
+}
+
+std::variant<Job, int> prepare(const SettingsOptions& options, const Renderer& renderer) {
+  const Renderer* const renderers[] = {&renderer};
+  return prepare(options, renderers);
 }
 
 bool outputsAreWritable(const std::vector<PlannedOutput>& outputs, const std::string& scenePath,

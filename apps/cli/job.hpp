@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <variant>
 #include <vector>
@@ -26,9 +27,12 @@ struct Job {
 };
 
 // The job the options ask for, or the exit status of the message already
-// printed about them: refused when a render by an algorithm of one of these
-// families would exceed its limits (render/render_limits.hpp).
-std::variant<Job, int> prepare(const SettingsOptions& options, const std::vector<Family>& families);
+// printed about them: refused when a render by one of `renderers` would
+// exceed its limits (render/render_limits.hpp).
+std::variant<Job, int> prepare(const SettingsOptions& options,
+                               std::span<const Renderer* const> renderers);
+// The same for a render by `renderer` alone.
+std::variant<Job, int> prepare(const SettingsOptions& options, const Renderer& renderer);
 
 // Says what is wrong with the files a command will write, before it renders.
 bool outputsAreWritable(const std::vector<PlannedOutput>& outputs, const std::string& scenePath,

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "algorithms/registry.hpp"
+#include "core/text.hpp"
 #include "job.hpp"
 #include "reports/ray_tree_picture.hpp"
 #include "reports/ray_tree_text.hpp"
@@ -14,9 +15,17 @@
 namespace rise::cli {
 namespace {
 
+// The algorithms that record a pixel's tree of rays.
+std::vector<std::string_view> treeAlgorithmNames() {
+  std::vector<std::string_view> names;
+  for (const Renderer* renderer : renderersOffering(Look::RayTrees))
+    names.push_back(renderer->name());
+  return names;
+}
+
 struct ExplainOptions {
   SettingsOptions settings;
-  std::string algorithm = "scanline";
+  std::string algorithm{defaultRenderer(Use::Explain).name()};
   std::filesystem::path directory;
   std::vector<int> region;  // x, y, width, height; empty: the whole image
   int every = 0;
@@ -25,7 +34,7 @@ struct ExplainOptions {
 
 struct InspectOptions {
   SettingsOptions settings;
-  std::string algorithm = "ray-tracing";
+  std::string algorithm{defaultRenderer(Use::Inspect).name()};
   std::vector<int> pixel;  // x, y
   std::filesystem::path json;
   std::filesystem::path picture;
@@ -54,7 +63,7 @@ int explain(const ExplainOptions& options) {
   if (!outputsAreWritable({{directory / "index.html", "-o " + directory.string()}},
                           options.settings.scenePath, true))
     return kExitBadInput;
-  std::variant<Job, int> prepared = prepare(options.settings, {renderer.description().family});
+  std::variant<Job, int> prepared = prepare(options.settings, renderer);
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   const Job& job = std::get<Job>(prepared);
   StepBudget budget;
@@ -83,10 +92,10 @@ int explain(const ExplainOptions& options) {
 
 int inspect(const InspectOptions& options) {
   const Renderer& renderer = *findRenderer(options.algorithm);
-  if (renderer.description().family == Family::VisibleSurface) {
-    std::cerr << "rise: -a " << options.algorithm
-              << ": a visible-surface algorithm traces no rays; expected a ray tracer or the "
-                 "hybrid (`rise explain` shows the steps of the others)\n";
+  if (!renderer.description().offers(Look::RayTrees)) {
+    std::cerr << "rise: -a " << options.algorithm << ": traces no rays, and so has no ray tree; "
+              << "expected one of " << joined(treeAlgorithmNames())
+              << " (`rise explain` shows the steps of the others)\n";
     return kExitBadInput;
   }
   if (!options.picture.empty() && options.picture.extension() != ".svg") {
@@ -98,7 +107,7 @@ int inspect(const InspectOptions& options) {
   if (!options.json.empty()) outputs.push_back({options.json, "-o"});
   if (!options.picture.empty()) outputs.push_back({options.picture, "--picture"});
   if (!outputsAreWritable(outputs, options.settings.scenePath)) return kExitBadInput;
-  std::variant<Job, int> prepared = prepare(options.settings, {renderer.description().family});
+  std::variant<Job, int> prepared = prepare(options.settings, renderer);
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   Job& job = std::get<Job>(prepared);
   const glm::ivec2 pixel(options.pixel[0], options.pixel[1]);
@@ -150,7 +159,8 @@ std::function<std::optional<int>()> addLookInsideCommands(CLI::App& app) {
       "step, what the step did, the counts so far");
   addSettingsOptions(*explainCommand, explainOptions->settings);
   explainCommand
-      ->add_option("-a,--algorithm", explainOptions->algorithm, "Algorithm (default: scanline)")
+      ->add_option("-a,--algorithm", explainOptions->algorithm,
+                   "Algorithm (default: " + explainOptions->algorithm + ")")
       ->check(CLI::IsMember(algorithmNames()));
   explainCommand->add_option("-o,--output", explainOptions->directory,
                              "Folder to write the page into (default: the scene's name)");
@@ -178,7 +188,8 @@ std::function<std::optional<int>()> addLookInsideCommands(CLI::App& app) {
       ->required();
   inspectCommand
       ->add_option("-a,--algorithm", inspectOptions->algorithm,
-                   "A ray tracer or the hybrid (default: ray-tracing)")
+                   "Algorithm: " + joined(treeAlgorithmNames()) +
+                       " (default: " + inspectOptions->algorithm + ")")
       ->check(CLI::IsMember(algorithmNames()));
   inspectCommand->add_option("-o,--output", inspectOptions->json, "Also write the tree as JSON");
   inspectCommand->add_option(

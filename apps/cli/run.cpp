@@ -19,6 +19,7 @@
 #include "look_inside.hpp"
 #include "manual_command.hpp"
 #include "progress_bar.hpp"
+#include "render/render_limits.hpp"
 #include "render_outputs.hpp"
 #include "settings_options.hpp"
 #include "stats_report.hpp"
@@ -31,7 +32,7 @@ namespace {
 struct RenderOptions {
   SettingsOptions settings;
   std::filesystem::path output;
-  std::string algorithm = "ray-tracing";
+  std::string algorithm{defaultRenderer(Use::Render).name()};
   RenderOutputOptions outputs;
   AnimationOptions animation;
 };
@@ -46,7 +47,7 @@ int render(const RenderOptions& options, const CLI::App& command) {
   if (!renderOutputsAreValid(options.outputs, options.settings, algorithm, output))
     return kExitBadInput;
 
-  std::variant<Job, int> prepared = prepare(options.settings, {algorithm.family});
+  std::variant<Job, int> prepared = prepare(options.settings, renderer);
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   Job& job = std::get<Job>(prepared);
   job.settings.buffers = options.outputs.buffers;  // those --aov writes, and no others
@@ -82,7 +83,7 @@ int compare(const CompareOptions& options) {
   const std::variant<std::filesystem::path, int> directory = comparisonFolder(options);
   if (const int* status = std::get_if<int>(&directory)) return *status;
   const std::vector<const Renderer*> renderers = comparedRenderers(options);
-  std::variant<Job, int> prepared = prepare(options.settings, familiesOf(renderers));
+  std::variant<Job, int> prepared = prepare(options.settings, renderers);
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   const Job& job = std::get<Job>(prepared);
 
@@ -98,13 +99,50 @@ int compare(const CompareOptions& options) {
                                renders, options.encoding);
 }
 
+// What each algorithm would say of rendering the job: nothing where it
+// would render it, else why it refuses. Algorithms that say the same are
+// named together: "ray-tracing, hybrid: a 640 x 480 image ... may trace up
+// to ...".
+struct Verdicts {
+  std::vector<std::pair<std::string, std::vector<std::string_view>>> refusals;
+  std::vector<std::string_view> able;
+};
+
+Verdicts verdictsOn(const Job& job) {
+  Verdicts verdicts;
+  for (const Renderer* renderer : allRenderers()) {
+    try {
+      checkRenderFits(job.scene, job.settings, *renderer);
+      verdicts.able.push_back(renderer->name());
+    } catch (const RenderLimitError& error) {
+      const std::string message = error.what();
+      const auto same = std::ranges::find_if(
+          verdicts.refusals, [&](const auto& refusal) { return refusal.first == message; });
+      if (same != verdicts.refusals.end())
+        same->second.push_back(renderer->name());
+      else
+        verdicts.refusals.push_back({message, {renderer->name()}});
+    }
+  }
+  return verdicts;
+}
+
 // Loads the scene and checks that its own image can be rendered by every
-// algorithm, as `rise render` would with no options.
+// algorithm, as `rise render -a ALGORITHM` would with no other option; names
+// those that would refuse, and why.
 int validate(const std::string& scenePath) {
-  std::variant<Job, int> prepared =
-      prepare({scenePath, {}}, {Family::VisibleSurface, Family::RayTracing});
+  std::variant<Job, int> prepared = prepare({scenePath, {}}, {});
   if (const int* status = std::get_if<int>(&prepared)) return *status;
-  const Scene& scene = std::get<Job>(prepared).scene;
+  const Job& job = std::get<Job>(prepared);
+  const Scene& scene = job.scene;
+  const Verdicts verdicts = verdictsOn(job);
+  if (!verdicts.refusals.empty()) {
+    std::cerr << "rise: " << scene.source << " loads, but not every algorithm would render it:\n";
+    for (const auto& [message, names] : verdicts.refusals)
+      std::cerr << "  " << joined(names) << ": " << message << "\n";
+    if (!verdicts.able.empty()) std::cerr << "  " << joined(verdicts.able) << ": would render it\n";
+    return kExitBadInput;
+  }
   std::cout << scene.source << ": ok (" << scene.shapes.size() << " objects, "
             << scene.lights.size() << " lights, " << scene.materials.size() << " materials)\n";
   return 0;
@@ -113,15 +151,16 @@ int validate(const std::string& scenePath) {
 void listAlgorithms() {
   for (const Renderer* renderer : allRenderers()) {
     const AlgorithmDescription& algorithm = renderer->description();
-    std::vector<std::string_view> options, effects, shadows;
+    std::vector<std::string_view> options, effects, shadows, looks;
     for (Option option : algorithm.options) options.push_back(toString(option));
+    for (Look look : algorithm.looks) looks.push_back(toString(look));
     for (Effect effect : algorithm.effects) effects.push_back(toString(effect));
     for (ShadowMethod method : algorithm.shadowMethods) shadows.push_back(shadowMethodName(method));
     std::cout << algorithm.name << "\n    " << algorithm.summary << "\n    " << algorithm.citation
               << "\n    family: " << toString(algorithm.family)
               << "\n    buffers: " << joined(algorithm.buffers)
               << "\n    options: " << joined(options) << "\n    effects: " << joined(effects)
-              << "\n";
+              << "\n    shows: " << joined(looks) << "\n";
     if (!shadows.empty()) std::cout << "    shadows: " << joined(shadows) << "\n";
   }
 }

@@ -14,7 +14,7 @@ int coordinateComparison(const cli::CompareOptions& options, int ranks) {
   const std::variant<std::filesystem::path, int> directory = cli::comparisonFolder(options);
   std::variant<cli::Job, int> prepared = cli::kExitBadInput;
   if (std::holds_alternative<std::filesystem::path>(directory))
-    prepared = cli::prepare(options.settings, cli::familiesOf(renderers));
+    prepared = cli::prepare(options.settings, renderers);
   const int* failed = std::get_if<int>(&directory);
   if (!failed) failed = std::get_if<int>(&prepared);
 
@@ -38,8 +38,7 @@ int coordinateComparison(const cli::CompareOptions& options, int ranks) {
 
 int serveComparison(const cli::CompareOptions& options) {
   const std::vector<const Renderer*> renderers = cli::comparedRenderers(options);
-  const std::variant<cli::Job, int> prepared =
-      cli::prepare(options.settings, cli::familiesOf(renderers));
+  const std::variant<cli::Job, int> prepared = cli::prepare(options.settings, renderers);
   const cli::Job* job = std::get_if<cli::Job>(&prepared);
   return serve(job ? 0 : std::get<int>(prepared), [&](int item) {
     RenderObserver unwatched;  // the ranks draw no progress bars

@@ -9,7 +9,7 @@
 #include "algorithms/registry.hpp"
 #include "job.hpp"
 #include "render/film.hpp"
-#include "tile_stats.hpp"
+#include "render/tile_statistics.hpp"
 #include "tiles.hpp"
 #include "work_queue.hpp"
 
@@ -82,8 +82,7 @@ int prepareRun(const DistributedRenderOptions& options, const Renderer& renderer
                  "into the image's tiles; write it with rise render, or with --frames\n";
     return cli::kExitBadInput;
   }
-  std::variant<cli::Job, int> prepared =
-      cli::prepare(options.settings, {renderer.description().family});
+  std::variant<cli::Job, int> prepared = cli::prepare(options.settings, renderer);
   if (const int* failed = std::get_if<int>(&prepared)) return *failed;
   const auto chosen = workItems(options, std::get<cli::Job>(prepared));
   std::optional<std::string> problem;
@@ -129,7 +128,7 @@ class Gatherer {
 
   // Writes the still image, once every tile is in.
   int finish(double seconds) {
-    whole_.stats = combinedTileStats(renderer_.description().family, tileStats_, seconds);
+    whole_.stats = combinedTileStats(renderer_.description(), tileStats_, seconds);
     return write(whole_, outputOf(options_));
   }
 
@@ -181,8 +180,7 @@ int coordinate(const DistributedRenderOptions& options, int ranks) {
 
 int work(const DistributedRenderOptions& options) {
   const Renderer& renderer = *findRenderer(options.algorithm);
-  std::variant<cli::Job, int> prepared =
-      cli::prepare(options.settings, {renderer.description().family});
+  std::variant<cli::Job, int> prepared = cli::prepare(options.settings, renderer);
   cli::Job* job = std::get_if<cli::Job>(&prepared);
   int status = job ? 0 : std::get<int>(prepared);
   std::vector<WorkItem> items;

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 
+#include "algorithms/registry.hpp"
 #include "animation.hpp"
 #include "render_outputs.hpp"
 #include "settings_options.hpp"
@@ -19,7 +20,7 @@ namespace rise::mpi {
 struct DistributedRenderOptions {
   cli::SettingsOptions settings;
   std::filesystem::path output;
-  std::string algorithm = "ray-tracing";
+  std::string algorithm{defaultRenderer(Use::Render).name()};
   cli::RenderOutputOptions outputs;
   cli::AnimationOptions animation;
   int tileSize = 64;

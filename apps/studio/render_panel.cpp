@@ -202,7 +202,7 @@ void Studio::drawRenderImage() {
 
 void Studio::drawPixelValues() {
   if (render_.shownAt.clicked && render_.result && !render_.job &&
-      findRenderer(render_.algorithm)->description().family == Family::RayTracing)
+      findRenderer(render_.algorithm)->description().offers(Look::RayTrees))
     inspectPixel(*render_.shownAt.hovered);
   if (!render_.shownAt.hovered || !render_.result || render_.job) {
     ImGui::TextDisabled(

@@ -11,9 +11,8 @@
 namespace rise::studio {
 
 Studio::Studio(const std::filesystem::path& scene) {
-  for (const Renderer* renderer : allRenderers())
-    if (renderer->name() == "ray-tracing" || renderer->name() == "z-buffer")
-      comparison_.chosen.emplace_back(renderer->name());
+  for (const Renderer* renderer : defaultComparison())
+    comparison_.chosen.emplace_back(renderer->name());
   if (!scene.empty()) open(scene);
 }
 

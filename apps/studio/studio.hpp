@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "algorithms/registry.hpp"
 #include "algorithms/settings_for_scene.hpp"
 #include "file_browser.hpp"
 #include "image_view.hpp"
@@ -187,7 +188,7 @@ class Studio {
   std::optional<std::function<void()>> afterUnsavedQuestion_;
   bool quit_ = false;
 
-  std::string algorithm_ = "ray-tracing";
+  std::string algorithm_{defaultRenderer(Use::Render).name()};
   RenderRequest request_;
   RenderView render_;
   int renderedRevision_ = -1;  // the session revision the render panel's render is of

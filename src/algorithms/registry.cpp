@@ -45,6 +45,33 @@ const Renderer* findRenderer(std::string_view name) {
   return nullptr;
 }
 
+const Renderer& defaultRenderer(Use use) {
+  // Whitted's ray tracer draws the most of a scene at once: shadows, mirrors
+  // and glass; the scanline algorithm's steps, a scanline each, are the
+  // easiest to follow.
+  switch (use) {
+    case Use::Explain:
+      return *findRenderer("scanline");
+    case Use::Render:
+    case Use::Inspect:
+      break;
+  }
+  return *findRenderer("ray-tracing");
+}
+
+std::vector<const Renderer*> defaultComparison() {
+  // Whitted's shadows, mirror and glass beside Catmull's depth buffer: the
+  // two families' best-known algorithms.
+  return {findRenderer("ray-tracing"), findRenderer("z-buffer")};
+}
+
+std::vector<const Renderer*> renderersOffering(Look look) {
+  std::vector<const Renderer*> offering;
+  for (const Renderer* renderer : allRenderers())
+    if (renderer->description().offers(look)) offering.push_back(renderer);
+  return offering;
+}
+
 RenderResult renderTimed(const Renderer& renderer, const Scene& scene,
                          const RenderSettings& settings, RenderObserver& observer) {
   const auto start = std::chrono::steady_clock::now();

@@ -125,18 +125,4 @@ void jitteredValues(int n, Rng& rng, std::vector<float>& values) {
   for (int i = 0; i < n; ++i) values[i] = cellPosition(i, rng.uniform(), n);
 }
 
-Vec2 squareToDisk(const Vec2& u) {
-  const Vec2 offset = 2.0f * u - Vec2(1.0f);
-  if (offset == Vec2(0.0f)) return Vec2(0.0f);
-  float radius, angle;
-  if (std::abs(offset.x) > std::abs(offset.y)) {
-    radius = offset.x;
-    angle = (kPi / 4.0f) * (offset.y / offset.x);
-  } else {
-    radius = offset.y;
-    angle = (kPi / 2.0f) - (kPi / 4.0f) * (offset.x / offset.y);
-  }
-  return radius * Vec2(std::cos(angle), std::sin(angle));
-}
-
 }  // namespace rise

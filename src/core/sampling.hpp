@@ -95,9 +95,4 @@ void shuffle(std::vector<T>& items, Rng& rng) {
     std::swap(items[i - 1], items[rng.below(static_cast<std::uint32_t>(i))]);
 }
 
-// Maps the unit square onto the unit disk keeping strata apart and areas
-// equal (Shirley & Chiu, "A low distortion map between disk and square",
-// 1997); the square's centre maps to the disk's centre.
-Vec2 squareToDisk(const Vec2& u);
-
 }  // namespace rise

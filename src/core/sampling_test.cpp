@@ -99,14 +99,6 @@ TEST(Shuffle, KeepsEveryItem) {
   EXPECT_NE(items, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
 }
 
-TEST(SquareToDisk, MapsIntoTheDiskAndTheCentreToTheCentre) {
-  EXPECT_EQ(squareToDisk(Vec2(0.5f)), Vec2(0.0f));
-  EXPECT_NEAR(glm::length(squareToDisk(Vec2(1.0f, 0.5f))), 1.0f, 1e-6f);
-  Rng rng(6);
-  for (int i = 0; i < 1000; ++i)
-    EXPECT_LE(glm::length(squareToDisk({rng.uniform(), rng.uniform()})), 1.0f + 1e-6f);
-}
-
 TEST(ChooseSampling, ACountAloneMeansJittered) {
   const PixelSampling sampling = chooseSampling({}, 16, std::nullopt);
   EXPECT_EQ(sampling.samples, 16);

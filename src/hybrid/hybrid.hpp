@@ -8,6 +8,7 @@ namespace rise {
 class HybridRenderer final : public Renderer {
  public:
   const AlgorithmDescription& description() const override;
+  RenderNeeds needs(const Scene& scene, const RenderSettings& settings) const override;
   RenderResult render(const Scene& scene, const RenderSettings& settings,
                       RenderObserver& observer) const override;
 };

@@ -38,6 +38,7 @@
 #include <array>
 #include <cmath>
 
+#include "core/warps.hpp"
 #include "raster/polygon_clipping.hpp"
 #include "raster/polygon_coverage.hpp"
 

@@ -4,9 +4,10 @@
 #include <optional>
 
 #include "core/random.hpp"
-#include "core/sampling.hpp"
+#include "core/sampler.hpp"
 #include "raster/shadow_map.hpp"
 #include "render/film.hpp"
+#include "render/render_limits.hpp"
 
 namespace rise {
 
@@ -22,6 +23,15 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
   stats.add("polygons_clipped", static_cast<double>(counters.clipped));
   stats.add("polygons_drawn", static_cast<double>(screen.polygons.size()));
 }
+
+namespace {
+
+// The film (a weighted sum and a weight), the image, the auxiliary buffers
+// and the images written from them, each pass's own image and buffers and
+// their frame's per-pixel arrays.
+constexpr std::uint64_t kVisibleSurfaceBytesPerPixel = 200;
+
+}  // namespace
 
 AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_view summary,
                                              std::string_view citation,
@@ -43,7 +53,18 @@ AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_
           std::move(options),
           std::move(effects),
           {},
-          std::move(shadowMethods)};
+          std::move(shadowMethods),
+          {Look::Steps},
+          TileStatistics::WholeImage};
+}
+
+RenderNeeds visibleSurfaceNeeds(const Scene& scene, const RenderSettings& settings) {
+  return memoryNeeds(scene, settings, kVisibleSurfaceBytesPerPixel);
+}
+
+RenderNeeds VisibleSurfaceRenderer::needs(const Scene& scene,
+                                          const RenderSettings& settings) const {
+  return visibleSurfaceNeeds(scene, settings);
 }
 
 TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& settings,
@@ -58,8 +79,8 @@ TessellatedScene tessellateForRaster(const Scene& scene, const RenderSettings& s
 
 // The accumulation buffer's passes: where in the pixel, where on the lens
 // and when in the shutter interval each is taken, every dimension stratified
-// on its own and shuffled, as the distributed ray tracer's samples are (Cook
-// 1986). The offsets follow the render's sample pattern, the same in every
+// on its own and shuffled, as the distributed ray tracer's samples are
+// (core/sampler.hpp). The offsets follow the render's sample pattern, the same in every
 // pixel; adaptive refinement needs a pixel of its own to refine, which a
 // whole-frame pass is not, so it takes jittered offsets. A camera without a
 // shutter interval takes every pass at its opening.
@@ -69,16 +90,16 @@ std::vector<AccumulationPass> accumulationPasses(const Camera& camera,
   const SamplePattern pattern =
       sampling.pattern == SamplePattern::Adaptive ? SamplePattern::Jittered : sampling.pattern;
   Rng rng(settings.seed);
-  std::vector<Vec2> offsets, lens;
-  std::vector<float> times;
-  samplePositions(pattern, sampling.samples, rng, offsets);
-  samplePositions(SamplePattern::Jittered, sampling.samples, rng, lens);
-  jitteredValues(sampling.samples, rng, times);
-  shuffle(lens, rng);
-  shuffle(times, rng);
+  Sampler sampler({.squares = 1, .intervals = 1});  // the lens, the time
+  const std::vector<Vec2>& offsets =
+      sampler.startPixel({sampling.samples, pattern, sampling.filter}, rng);
   std::vector<AccumulationPass> passes;
-  for (int i = 0; i < sampling.samples; ++i)
-    passes.push_back({offsets[i], lens[i], camera.sceneTime(times[i])});
+  for (int i = 0; i < sampling.samples; ++i) {
+    SampleValues values = sampler.valuesOf(i, rng);
+    const Vec2 lens = values.next2D();
+    passes.push_back(
+        {offsets[static_cast<std::size_t>(i)], lens, camera.sceneTime(values.next1D())});
+  }
   return passes;
 }
 

@@ -43,6 +43,7 @@ struct AccumulationPass {
 // rendering", SIGGRAPH 1990). Each pass is a whole image by the algorithm.
 class VisibleSurfaceRenderer : public Renderer {
  public:
+  RenderNeeds needs(const Scene& scene, const RenderSettings& settings) const override;
   RenderResult render(const Scene& scene, const RenderSettings& settings,
                       RenderObserver& observer) const override;
 
@@ -140,6 +141,10 @@ AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_
                                              std::vector<Effect> ownEffects = {},
                                              std::vector<Option> ownOptions = {},
                                              std::vector<ShadowMethod> ownShadowMethods = {});
+
+// What a render by any of them needs: each pass's images and frame, the
+// film's sums, the polygons on the screen.
+RenderNeeds visibleSurfaceNeeds(const Scene& scene, const RenderSettings& settings);
 
 // The scene tessellated as the settings ask, planes centred under the camera,
 // moving shapes where they are at `time`, a fraction of the shutter interval

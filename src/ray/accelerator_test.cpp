@@ -7,153 +7,18 @@
 #include <gtest/gtest.h>
 
 #include <limits>
-#include <random>
 #include <stdexcept>
 
 #include "ray/scene_intersector.hpp"
-#include "scene/shapes/box.hpp"
-#include "scene/shapes/cone.hpp"
-#include "scene/shapes/convex_polygon.hpp"
-#include "scene/shapes/cylinder.hpp"
-#include "scene/shapes/keyframed_mesh.hpp"
-#include "scene/shapes/moving_shape.hpp"
 #include "scene/shapes/plane.hpp"
 #include "scene/shapes/sphere.hpp"
-#include "scene/shapes/transformed_shape.hpp"
-#include "scene/shapes/triangle.hpp"
 #include "scene/shapes/triangle_mesh.hpp"
-#include "scene/transform.hpp"
+#include "support/random_scene_testing.hpp"
 
 namespace rise {
 namespace {
 
-constexpr int kOpaque = 0;
-constexpr int kGlass = 1;
-constexpr int kTintedGlass = 2;
-
-class RandomScene {
- public:
-  explicit RandomScene(unsigned seed) : random_(seed) {}
-
-  float uniform(float low, float high) {
-    return std::uniform_real_distribution<float>(low, high)(random_);
-  }
-  Vec3 point(float extent) {
-    return {uniform(-extent, extent), uniform(-extent, extent), uniform(-extent, extent)};
-  }
-  int material() { return std::uniform_int_distribution<int>(0, 2)(random_); }
-
-  // Small triangles scattered through the cube of half-width `extent`.
-  std::unique_ptr<Shape> triangleSoup(int triangles, float extent) {
-    std::vector<Vec3> vertices;
-    std::vector<std::array<int, 3>> faces;
-    for (int i = 0; i < triangles; ++i) {
-      const Vec3 centre = point(extent);
-      const int first = static_cast<int>(vertices.size());
-      for (int corner = 0; corner < 3; ++corner) vertices.push_back(centre + point(0.4f));
-      faces.push_back({first, first + 1, first + 2});
-    }
-    return std::make_unique<TriangleMesh>(std::move(vertices), std::move(faces), material());
-  }
-
-  // A closed mesh: a grid of quads wrapped around a sphere, whose triangles
-  // share edges and vertices, as a modelled mesh does.
-  static MeshGeometry closedMeshGeometry(Vec3 centre, float radius) {
-    constexpr int kRings = 8;
-    constexpr int kSegments = 12;
-    std::vector<Vec3> vertices;
-    for (int ring = 0; ring <= kRings; ++ring) {
-      const float polar = kPi * static_cast<float>(ring) / kRings;
-      for (int segment = 0; segment < kSegments; ++segment) {
-        const float azimuth = 2.0f * kPi * static_cast<float>(segment) / kSegments;
-        vertices.push_back(centre + radius * Vec3(std::sin(polar) * std::cos(azimuth),
-                                                  std::cos(polar),
-                                                  std::sin(polar) * std::sin(azimuth)));
-      }
-    }
-    std::vector<std::array<int, 3>> faces;
-    for (int ring = 0; ring < kRings; ++ring) {
-      for (int segment = 0; segment < kSegments; ++segment) {
-        const int a = ring * kSegments + segment;
-        const int b = ring * kSegments + (segment + 1) % kSegments;
-        faces.push_back({a, b, a + kSegments});
-        faces.push_back({b, b + kSegments, a + kSegments});
-      }
-    }
-    return {std::move(vertices), {}, {}, std::move(faces)};
-  }
-  std::unique_ptr<Shape> closedMesh(Vec3 centre, float radius) {
-    return std::make_unique<TriangleMesh>(closedMeshGeometry(centre, radius), material());
-  }
-
-  // Shapes that move while the shutter is open: rays of different times
-  // meet them in different places.
-  std::unique_ptr<Shape> movingBox() {
-    const Vec3 start = point(3.0f);
-    return std::make_unique<MovingShape>(
-        std::make_unique<Box>(Vec3(-0.4f), Vec3(0.4f), material()),
-        TransformSpec{.translate = start},
-        TransformSpec{.rotateDegrees = point(90.0f), .translate = start + point(1.0f)});
-  }
-  std::unique_ptr<Shape> keyframedMesh() {
-    const Vec3 start = point(3.0f);
-    return std::make_unique<KeyframedMesh>(
-        closedMeshGeometry(start, 0.8f), closedMeshGeometry(start + point(1.0f), 1.1f), material());
-  }
-
-  std::unique_ptr<Shape> turned(std::unique_ptr<Shape> shape) {
-    return std::make_unique<TransformedShape>(std::move(shape),
-                                              worldFromObject({.scale = Vec3(uniform(0.5f, 1.5f)),
-                                                               .rotateDegrees = point(180.0f),
-                                                               .translate = point(3.0f)}));
-  }
-
-  Scene scene() {
-    Scene scene;
-    scene.materials.resize(3);
-    scene.materials[kGlass].transmission = 0.9f;
-    scene.materials[kTintedGlass].transmission = 0.5f;
-    scene.materials[kTintedGlass].color = Color(0.9f, 0.6f, 0.3f);
-    auto& shapes = scene.shapes;
-    shapes.push_back(std::make_unique<Plane>(Vec3(0.0f, -5.0f, 0.0f), Vec3(0.1f, 1.0f, 0.0f), 0));
-    shapes.push_back(triangleSoup(300, 4.0f));
-    shapes.push_back(closedMesh(point(3.0f), 1.2f));
-    shapes.push_back(turned(closedMesh(Vec3(0.0f), 1.0f)));
-    shapes.push_back(turned(triangleSoup(50, 1.0f)));
-    shapes.push_back(movingBox());
-    shapes.push_back(keyframedMesh());
-    for (int i = 0; i < 6; ++i) {
-      shapes.push_back(std::make_unique<Sphere>(point(4.0f), uniform(0.2f, 1.0f), material()));
-      const Vec3 corner = point(4.0f);
-      shapes.push_back(std::make_unique<Box>(corner, corner + point(0.8f), material()));
-      shapes.push_back(std::make_unique<Cylinder>(point(4.0f), point(1.0f), uniform(0.1f, 0.6f),
-                                                  uniform(0.3f, 1.5f), material()));
-      shapes.push_back(std::make_unique<Cone>(point(4.0f), point(1.0f), uniform(0.1f, 0.6f),
-                                              uniform(0.3f, 1.5f), material()));
-      shapes.push_back(std::make_unique<Triangle>(
-          std::array<Vec3, 3>{point(4.0f), point(4.0f), point(4.0f)}, material()));
-      shapes.push_back(turned(std::make_unique<Box>(Vec3(-0.5f), Vec3(0.5f), material())));
-    }
-    const Vec3 base = point(3.0f);
-    shapes.push_back(std::make_unique<ConvexPolygon>(
-        std::vector<Vec3>{base, base + Vec3(1.0f, 0.0f, 0.2f), base + Vec3(1.0f, 1.0f, 0.2f),
-                          base + Vec3(0.0f, 1.0f, 0.0f)},
-        material()));
-    return scene;
-  }
-
-  // From anywhere around the scene towards anywhere in it.
-  Ray ray() {
-    const Vec3 origin = point(7.0f);
-    return Ray{origin, point(4.0f) - origin, uniform(0.0f, 1.0f)};
-  }
-
- private:
-  std::mt19937 random_;
-};
-
-constexpr int kScenes = 4;
-constexpr int kRaysPerScene = 3000;
+using namespace random_scene_testing;
 
 TEST(Accelerators, FindTheNearestHitOfBruteForce) {
   for (int seed = 0; seed < kScenes; ++seed) {
@@ -195,79 +60,6 @@ TEST(Accelerators, FindTheNearestHitOfBruteForce) {
   }
 }
 
-// Calls test(scene, its seed, structure, rays) for each random scene and
-// each structure this build has, `rays` drawing from a seed of its own
-// (raySeed plus the scene's).
-template <typename Test>
-void forEachSceneAndStructure(int raySeed, Test&& test) {
-  for (int seed = 0; seed < kScenes; ++seed) {
-    RandomScene random(seed);
-    const Scene scene = random.scene();
-    for (Accel accel : availableAccels()) {
-      RandomScene rays(raySeed + seed);
-      test(scene, seed, accel, rays);
-    }
-  }
-}
-
-// How the packets of the two tests below are made: of every size in turn,
-// every other one coherent, every third from a tMin above zero.
-struct PacketPlan {
-  int size;
-  bool coherent;
-  float tMin;
-};
-PacketPlan packetPlan(int packet, RandomScene& rays, float largestTMin) {
-  return {1 + packet % kPacketSize, packet % 2 == 0,
-          packet % 3 == 0 ? rays.uniform(0.0f, largestTMin) : 0.0f};
-}
-
-// Packets of every size: coherent ones (rays from one point to neighbouring
-// points, as a row of pixels' primary rays) and scattered ones, with rays
-// ended early and rays of non-finite components among them. Each ray of a
-// packet finds what it finds alone, to the bit: what brute force finds
-// (above).
-TEST(Accelerators, FindEachRayOfAPacketsNearestHit) {
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  forEachSceneAndStructure(3000, [&](const Scene& scene, int seed, Accel accel, RandomScene& rays) {
-    const auto structure = buildAccelerator(accel, scene.shapes);
-    int hits = 0;
-    for (int i = 0; i < kRaysPerScene / kPacketSize; ++i) {
-      const PacketPlan plan = packetPlan(i, rays, 0.3f);
-      const Vec3 eye = rays.point(7.0f), aim = rays.point(4.0f);
-      RayPacket packet;
-      packet.size = plan.size;
-      for (int lane = 0; lane < packet.size; ++lane) {
-        packet.rays[lane] = plan.coherent
-                                ? Ray{eye, aim + 0.05f * Vec3(lane % 4, lane / 4, 0) - eye, 0.5f}
-                                : rays.ray();
-        if (i % 7 == 0 && lane == 2) packet.rays[lane].direction.y = nan;
-        packet.hits[lane].t = lane % 3 == 1 ? rays.uniform(0.2f, 1.0f) : kInfinity;
-      }
-      const RayPacket given = packet;
-      structure->nearestOfPacket(packet, plan.tMin);
-      for (int lane = 0; lane < packet.size; ++lane) {
-        Hit expected = given.hits[lane];
-        IntersectionCounters counters;
-        const bool found = structure->nearest(given.rays[lane], plan.tMin, expected, counters);
-        ASSERT_EQ(packet.found[lane], found)
-            << accelName(accel) << ", scene " << seed << ", packet " << i << ", lane " << lane;
-        if (!found) continue;
-        ++hits;
-        const Hit& actual = packet.hits[lane];
-        ASSERT_EQ(actual.t, expected.t) << accelName(accel) << ", packet " << i;
-        ASSERT_EQ(actual.shape, expected.shape) << accelName(accel) << ", packet " << i;
-        // A shape records only what it needs (a sphere leaves the rest as it found it).
-        if (expected.shape->primitiveCount() > 1) {
-          EXPECT_EQ(actual.primitive, expected.primitive) << accelName(accel) << ", packet " << i;
-          EXPECT_EQ(actual.barycentric, expected.barycentric) << accelName(accel);
-        }
-      }
-    }
-    EXPECT_GT(hits, kRaysPerScene / 6) << accelName(accel);
-  });
-}
-
 TEST(Accelerators, LetThroughTheLightOfBruteForce) {
   for (int seed = 0; seed < kScenes; ++seed) {
     RandomScene random(seed);
@@ -292,46 +84,6 @@ TEST(Accelerators, LetThroughTheLightOfBruteForce) {
       EXPECT_GT(filtered, kRaysPerScene / 20) << accelName(accel);
     }
   }
-}
-
-// Packets of shadow rays of every size: coherent ones (from neighbouring
-// points towards one light) and scattered ones, of different lengths, with
-// rays of non-finite components among them. Each ray of a packet lets
-// through what it lets through alone, to the bit, and its tests are its own.
-TEST(Accelerators, LetThroughEachRayOfAPacketsLightAsAlone) {
-  const float nan = std::numeric_limits<float>::quiet_NaN();
-  forEachSceneAndStructure(4000, [&](const Scene& scene, int seed, Accel accel, RandomScene& rays) {
-    const SceneIntersector intersector(scene, accel);
-    int shadowed = 0;
-    int filtered = 0;
-    for (int i = 0; i < kRaysPerScene / kPacketSize; ++i) {
-      const PacketPlan plan = packetPlan(i, rays, 0.1f);
-      const Vec3 start = rays.point(4.0f), light = rays.point(7.0f);
-      ShadowRayPacket packet;
-      packet.size = plan.size;
-      for (int lane = 0; lane < packet.size; ++lane) {
-        const Vec3 from = start + 0.05f * Vec3(lane % 4, lane / 4, 0);
-        packet.rays[lane] = plan.coherent ? Ray{from, light - from, 0.5f} : rays.ray();
-        if (i % 7 == 0 && lane == 2) packet.rays[lane].origin.x = nan;
-        packet.tMax[lane] = plan.coherent && lane % 3 != 1 ? 1.0f : rays.uniform(0.2f, 1.2f);
-      }
-      const ShadowRayPacket given = packet;
-      const std::array<Color, kPacketSize> through =
-          intersector.transmittanceOfPacket(packet, plan.tMin);
-      for (int lane = 0; lane < packet.size; ++lane) {
-        IntersectionCounters alone;
-        const Color expected =
-            intersector.transmittance(given.rays[lane], plan.tMin, given.tMax[lane], alone);
-        ASSERT_EQ(through[lane], expected)
-            << accelName(accel) << ", scene " << seed << ", packet " << i << ", lane " << lane;
-        EXPECT_EQ(packet.costs[lane].tests > 0, alone.tests > 0) << accelName(accel);
-        if (expected == Color(0.0f)) ++shadowed;
-        if (expected != Color(0.0f) && expected != Color(1.0f)) ++filtered;
-      }
-    }
-    EXPECT_GT(shadowed, kRaysPerScene / 10) << accelName(accel);
-    EXPECT_GT(filtered, kRaysPerScene / 40) << accelName(accel);
-  });
 }
 
 // Two parallel squares, one mesh of four triangles, both crossed by the

@@ -20,14 +20,15 @@
 // shuffled apart (Cook, "Stochastic sampling in computer graphics", ACM TOG
 // 1986), so that every dimension is well spread and no two are correlated:
 // the sample in the pixel's top-left cell does not always take the lens's
-// top-left too. Surfaces deeper along a path draw fresh random values. The
+// top-left too (core/sampler.hpp lays them out). Surfaces deeper along a path
+// draw fresh random values. The
 // recursion itself is Whitted's (ray_tracing.cpp), asked these choices
 // instead of his single ray; with no lens, no shutter interval, no area light
 // and no roughness, the image is Whitted's with the same samples.
 #include "ray/distributed_ray_tracing.hpp"
 
+#include "core/warps.hpp"
 #include "ray/ray_tracing.hpp"
-#include "scene/light.hpp"
 
 namespace rise {
 
@@ -43,7 +44,8 @@ const AlgorithmDescription& DistributedRayTracer::description() const {
 
 namespace {
 
-// One sample's values in the five dimensions, each in [0, 1).
+// One sample's values in the four dimensions beyond the pixel's, each in
+// [0, 1).
 struct CameraSample {
   Vec2 lens;
   float time;
@@ -51,48 +53,16 @@ struct CameraSample {
   Vec2 gloss;
 };
 
-// The samples of one pixel, each dimension stratified on its own (uniformly
-// random for the random pattern) and shuffled. Kept across the pixels of a
-// tile to spare an allocation per pixel.
-class CameraSampleSet {
- public:
-  const std::vector<Vec2>& generate(const PixelSampling& sampling, Rng& rng) {
-    const int n = sampling.samples;
-    const bool random = sampling.pattern == SamplePattern::Random;
-    const SamplePattern spread = random ? SamplePattern::Random : SamplePattern::Jittered;
-    samplePositions(sampling.pattern, n, rng, pixel_);
-    samplePositions(spread, n, rng, lens_);
-    samplePositions(spread, n, rng, light_);
-    samplePositions(spread, n, rng, gloss_);
-    jitteredValues(n, rng, time_);
-    if (random)
-      for (float& t : time_) t = rng.uniform();
-    shuffle(lens_, rng);
-    shuffle(light_, rng);
-    shuffle(gloss_, rng);
-    shuffle(time_, rng);
-    return pixel_;
-  }
+// The lens, the light and the gloss in the unit square; the time in [0, 1).
+constexpr SampleLayout kCameraLayout{.squares = 3, .intervals = 1};
 
-  // Where sample i lies in its pixel, from the top-left corner.
-  const Vec2& offset(int i) const { return pixel_[static_cast<std::size_t>(i)]; }
-  CameraSample operator[](int i) const {
-    const auto at = static_cast<std::size_t>(i);
-    return {lens_[at], time_[at], light_[at], gloss_[at]};
-  }
-
- private:
-  std::vector<Vec2> pixel_, lens_, light_, gloss_;
-  std::vector<float> time_;
-};
-
-// A sample whose every dimension but the pixel's is drawn at random: the
-// samples adaptive supersampling adds one by one.
-CameraSample randomCameraSample(Rng& rng) {
-  return {{rng.uniform(), rng.uniform()},
-          rng.uniform(),
-          {rng.uniform(), rng.uniform()},
-          {rng.uniform(), rng.uniform()}};
+CameraSample cameraSample(SampleValues& values) {
+  CameraSample sample;
+  sample.lens = values.next2D();
+  sample.time = values.next1D();
+  sample.light = values.next2D();
+  sample.gloss = values.next2D();
+  return sample;
 }
 
 // A direction spread around `ideal` (unit) within a cone whose half-angle has
@@ -112,60 +82,42 @@ Vec3 spread(const Vec3& ideal, float roughness, const Vec2& u, const Vec3& norma
 }
 
 // The path's choices: at the surface seen from the eye, the sample's own
-// stratified light and gloss values; deeper, fresh random ones.
+// stratified light and gloss values; deeper, the sample's next values,
+// beyond its layout and so fresh random ones.
 class DistributedChoices final : public PathChoices {
  public:
-  DistributedChoices(const CameraSample& sample, Rng& rng) : sample_(sample), rng_(rng) {}
+  DistributedChoices(const CameraSample& sample, SampleValues& values)
+      : sample_(sample), values_(values) {}
 
   LightSample aimAt(const Light& light, const Vec3& point, int depth) override {
-    return light.illuminate(point, depth == 1 ? sample_.light : random());
+    return light.illuminate(point, depth == 1 ? sample_.light : values_.next2D());
   }
   Vec3 scatter(const Vec3& ideal, float roughness, const Vec3& normal, int depth) override {
-    return spread(ideal, roughness, depth == 1 ? sample_.gloss : random(), normal);
+    return spread(ideal, roughness, depth == 1 ? sample_.gloss : values_.next2D(), normal);
   }
 
  private:
-  Vec2 random() { return {rng_.uniform(), rng_.uniform()}; }
-
   const CameraSample& sample_;
-  Rng& rng_;
+  SampleValues& values_;
 };
 
 }  // namespace
 
 RenderResult DistributedRayTracer::render(const Scene& scene, const RenderSettings& settings,
                                           RenderObserver& observer) const {
-  const SceneIntersector intersector(scene, settings.accel, settings.threads);
-  const TracingContext context{scene, intersector, settings.maxDepth};
-  const ViewFrame view(scene.camera, settings.width, settings.height);
-  const auto traceSample = [&](const Vec2& raster, const CameraSample& sample, Rng& rng,
-                               TraceCounters& counters, RayTree* tree) {
-    Ray ray = thinLensRay(view, raster, sample.lens);
-    ray.time = scene.camera.sceneTime(sample.time);
-    if (tree)
-      tree->dimensions = SampleDimensions{sample.lens, ray.time, sample.light, sample.gloss};
-    DistributedChoices choices(sample, rng);
-    return tracePrimary(context, ray, choices, counters, tree);
-  };
-  const PixelSampling& sampling = settings.sampling;
-  RenderResult result = traceImage(settings, observer, [&](TileTrace& tile) {
-    if (sampling.pattern == SamplePattern::Adaptive)
-      return sampleAdaptively(tile, settings,
-                              [&](const Vec2& raster, Rng& rng, TraceCounters& c, RayTree* tree) {
-                                return traceSample(raster, randomCameraSample(rng), rng, c, tree);
-                              });
-    CameraSampleSet samples;
-    tracePixels(
-        tile, settings.seed,
-        [&](const glm::ivec2&, Rng& rng) -> const std::vector<Vec2>& {
-          return samples.generate(sampling, rng);
-        },
-        [&](const glm::ivec2& pixel, int i, Rng& rng, TraceCounters& counters, RayTree* tree) {
-          return traceSample(Vec2(pixel) + samples.offset(i), samples[i], rng, counters, tree);
+  return traceTiles(scene, settings, observer, [&](const TracingContext& context, TileTrace& tile) {
+    traceEachSample(
+        tile, settings, kCameraLayout,
+        [&](const Vec2& raster, SampleValues& values, TraceCounters& counters, RayTree* tree) {
+          const CameraSample sample = cameraSample(values);
+          Ray ray = thinLensRay(context.view, raster, sample.lens);
+          ray.time = scene.camera.sceneTime(sample.time);
+          if (tree)
+            tree->dimensions = SampleDimensions{sample.lens, ray.time, sample.light, sample.gloss};
+          DistributedChoices choices(sample, values);
+          return tracePrimary(context, ray, choices, counters, tree);
         });
   });
-  intersector.addBuildStats(result.stats);
-  return result;
 }
 
 }  // namespace rise

@@ -18,7 +18,7 @@ TEST(FirstHitBatch, ShadesEachHitAsShadeFirstHitDoes) {
   const SceneIntersector intersector(scene, Accel::Bvh, 1);
   const ViewFrame view(scene.camera, scene.image.width, scene.image.height);
   for (int maxDepth : {1, 4}) {
-    const TracingContext context{scene, intersector, maxDepth};
+    const TracingContext context{scene, intersector, maxDepth, view};
     FirstHitBatch batch(context);
     int hitsWithoutShadowRays = 0;
     for (int y = 0; y < scene.image.height; ++y) {

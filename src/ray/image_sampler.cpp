@@ -5,17 +5,6 @@
 
 namespace rise {
 
-AlgorithmDescription rayTracingAlgorithm(std::string_view name, std::string_view summary,
-                                         std::string_view citation, std::vector<Effect> effects) {
-  return {name,
-          summary,
-          citation,
-          Family::RayTracing,
-          {"depth", "normal", "cost"},
-          {Option::Accel, Option::MaxDepth},
-          std::move(effects)};
-}
-
 TileTrace::TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers,
                      RenderObserver& observer)
     : area_(area),

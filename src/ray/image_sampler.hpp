@@ -2,8 +2,7 @@
 // tiles that the workers trace apart; each sample a pixel takes is added to
 // the film, where the reconstruction filter weighs it (render/film.hpp), and
 // what its primary ray hit to the auxiliary buffers. Which samples a pixel
-// takes and how each is traced is each algorithm's own: see ray_tracing.cpp
-// (Whitted) and distributed_ray_tracing.cpp (Cook).
+// takes and how each is traced is each algorithm's own: see ray_tracer.hpp.
 #pragma once
 
 #include <cstdint>
@@ -25,12 +24,6 @@ struct SampleResult {
   float depth = kInfinity;
   Vec3 normal{0.0f};
 };
-
-// The description of a ray tracer: what the family shares (its buffers, the
-// settings it reads) with the algorithm's own name, summary, citation and
-// effects.
-AlgorithmDescription rayTracingAlgorithm(std::string_view name, std::string_view summary,
-                                         std::string_view citation, std::vector<Effect> effects);
 
 // A tile being traced: where its samples go and what they cost.
 class TileTrace {

@@ -22,19 +22,19 @@
 // and answers every choice of a path with one ray: an area light acts as a
 // point at its centre, a rough material as a smooth one. Anti-aliasing comes
 // from several samples in each pixel, placed by the render's pattern, or from
-// Whitted's own adaptive supersampling: a pixel's corners are traced first,
-// and where their colours differ by more than a threshold the square is
-// quartered and its new corners traced, down to a given depth.
+// Whitted's own adaptive supersampling (adaptive_supersampling.hpp): a
+// pixel's corners are traced first, and where their colours differ by more
+// than a threshold the square is quartered and its new corners traced, down
+// to a given depth. Where every pixel places its samples alike, their
+// primary rays go through the scene a packet at a time (primary_packets.hpp).
 #include "ray/ray_tracing.hpp"
 
-#include <algorithm>
-#include <array>
 #include <optional>
 #include <vector>
 
+#include "ray/primary_packets.hpp"
 #include "ray/ray_tree_builder.hpp"
 #include "ray/shadow_terminator.hpp"
-#include "scene/light.hpp"
 #include "shading/phong.hpp"
 
 namespace rise {
@@ -48,32 +48,6 @@ const AlgorithmDescription& WhittedRayTracer::description() const {
 }
 
 namespace {
-
-// Built where it is returned, not copied there: a surface point is large,
-// and copying it just after the shape wrote it field by field would wait for
-// those writes to reach the cache.
-SurfacePoint surfaceSeen(const Ray& ray, const Hit& hit, const Material& material) {
-  return material.readsTextureFrame() ? hit.shape->surfaceAt(ray, hit)
-                                      : hit.shape->pointAt(ray, hit);
-}
-
-ShadingFrame shadingFrame(const Ray& ray, const Hit& hit, const Material& material) {
-  ShadingFrame frame{.surface = surfaceSeen(ray, hit, material)};
-  frame.surface.shadingNormal = shadingNormal(material, frame.surface);
-  frame.toViewer = -glm::normalize(ray.direction);
-  frame.time = ray.time;
-  frame.entering = glm::dot(frame.surface.normal, frame.toViewer) > 0.0f;
-  frame.normal = frame.entering ? frame.surface.normal : -frame.surface.normal;
-  frame.shadingNormal = frame.entering ? frame.surface.shadingNormal : -frame.surface.shadingNormal;
-  return frame;
-}
-
-// A ray leaving the surface along `direction`, started a little off the
-// surface on the side it travels to, so that it does not hit it again.
-Ray spawnRay(const ShadingFrame& frame, const Vec3& direction) {
-  const float side = glm::dot(direction, frame.normal) >= 0.0f ? 1.0f : -1.0f;
-  return Ray{frame.surface.position + (side * kRayEpsilon) * frame.normal, direction, frame.time};
-}
 
 // One ray's journey and the rays it gives rise to. When a tree is being
 // recorded for a student, every ray is told to it as it is traced; the
@@ -228,21 +202,11 @@ class Recursion {
 
 }  // namespace
 
-LightSample SingleRayChoices::aimAt(const Light& light, const Vec3& point, int) {
-  return light.illuminate(point);
-}
-
-namespace {
-
-// A primary ray whose search of the scene found `hit` (nullptr: nothing),
-// the search's cost already counted: counted, then shaded.
 SampleResult shadeSearchedPrimary(const TracingContext& context, const Ray& ray, const Hit* hit,
                                   PathChoices& choices, TraceCounters& counters, RayTree* tree) {
   ++counters.primaryRays;
   return shadeFirstHit(context, ray, hit, choices, counters, tree);
 }
-
-}  // namespace
 
 SampleResult tracePrimary(const TracingContext& context, const Ray& ray, PathChoices& choices,
                           TraceCounters& counters, RayTree* tree) {
@@ -301,188 +265,21 @@ SampleResult FirstHitShading::finish(const TracingContext& context, PathChoices&
   return result;
 }
 
-namespace {
-
-float largestDifference(const std::array<Color, 4>& corners) {
-  float largest = 0.0f;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      largest = std::max(largest, maxComponent(glm::abs(corners[i] - corners[j])));
-  return largest;
-}
-
-// Adaptive supersampling of one square of the image: the average of its
-// corners if they agree, or else of its four quarters, each refined in turn,
-// down to `levelsLeft` more subdivisions. Corners are ordered top-left,
-// top-right, bottom-left, bottom-right.
-class AdaptiveRefinement {
- public:
-  AdaptiveRefinement(const TraceAt& traceAt, float threshold, Rng& rng, TraceCounters& counters)
-      : traceAt_(traceAt), threshold_(threshold), rng_(rng), counters_(counters) {}
-
-  Color refine(const Vec2& topLeft, float size, const std::array<Color, 4>& corners,
-               int levelsLeft) {
-    if (levelsLeft == 0 || largestDifference(corners) <= threshold_)
-      return 0.25f * (corners[0] + corners[1] + corners[2] + corners[3]);
-    refined_ = true;
-    const float half = 0.5f * size;
-    const Color top = colorAt(topLeft + Vec2(half, 0.0f));
-    const Color left = colorAt(topLeft + Vec2(0.0f, half));
-    const Color centre = colorAt(topLeft + Vec2(half, half));
-    const Color right = colorAt(topLeft + Vec2(size, half));
-    const Color bottom = colorAt(topLeft + Vec2(half, size));
-    const int next = levelsLeft - 1;
-    return 0.25f *
-           (refine(topLeft, half, {corners[0], top, left, centre}, next) +
-            refine(topLeft + Vec2(half, 0.0f), half, {top, corners[1], centre, right}, next) +
-            refine(topLeft + Vec2(0.0f, half), half, {left, centre, corners[2], bottom}, next) +
-            refine(topLeft + Vec2(half, half), half, {centre, right, bottom, corners[3]}, next));
-  }
-
-  bool refined() const { return refined_; }
-
- private:
-  Color colorAt(const Vec2& raster) { return traceAt_(raster, rng_, counters_, nullptr).color; }
-
-  const TraceAt& traceAt_;
-  float threshold_;
-  Rng& rng_;
-  TraceCounters& counters_;
-  bool refined_ = false;
-};
-
-// The subdivisions that `samples` allow: 16 samples, two levels of quarters.
-int adaptiveLevels(int samples) {
-  int levels = 0;
-  for (int cells = 1; cells < samples; cells *= 4) ++levels;
-  return levels;
-}
-
-}  // namespace
-
-// The tile's pixel corners are traced once each, shared by the pixels around
-// them; each pixel then refines its own square.
-void sampleAdaptively(TileTrace& tile, const RenderSettings& settings, const TraceAt& traceAt) {
-  const PixelRect& area = tile.area();
-  TraceCounters& counters = tile.counters;
-  std::vector<SampleResult> corners;
-  std::vector<std::uint64_t> cornerTests;
-  for (int y = area.y0; y <= area.y1; ++y) {
-    for (int x = area.x0; x <= area.x1; ++x) {
-      Rng rng(pixelSeed(settings.seed, x, y), 1);
-      const std::uint64_t testsBefore = counters.intersections.tests;
-      corners.push_back(
-          traceAt(Vec2(static_cast<float>(x), static_cast<float>(y)), rng, counters, nullptr));
-      cornerTests.push_back(counters.intersections.tests - testsBefore);
-    }
-  }
-  const auto corner = [&](int x, int y) {
-    return static_cast<std::size_t>(y - area.y0) * (area.width() + 1) + (x - area.x0);
-  };
-  const int levels = adaptiveLevels(settings.sampling.samples);
-  for (int y = area.y0; y < area.y1 && !tile.cancelled(); ++y) {
-    for (int x = area.x0; x < area.x1; ++x) {
-      Rng rng(pixelSeed(settings.seed, x, y), 2);
-      const std::uint64_t testsBefore = counters.intersections.tests;
-      AdaptiveRefinement refinement(traceAt, settings.sampling.adaptiveThreshold, rng, counters);
-      const Color color =
-          refinement.refine(Vec2(static_cast<float>(x), static_cast<float>(y)), 1.0f,
-                            {corners[corner(x, y)].color, corners[corner(x + 1, y)].color,
-                             corners[corner(x, y + 1)].color, corners[corner(x + 1, y + 1)].color},
-                            levels);
-      tile.addSample({x, y}, Vec2(0.5f), color);
-      if (refinement.refined()) ++tile.refinedPixels;
-      tile.recordBuffers({x, y}, corners[corner(x, y)],
-                         cornerTests[corner(x, y)] + counters.intersections.tests - testsBefore);
-    }
-  }
-}
-
-namespace {
-
-// The primary hits of a row of a tile, found a packet of rays at a time
-// (bvh.hpp) before the row is shaded. Where every pixel places its samples
-// alike, a row's samples in order lie side by side and their rays are
-// coherent: eight neighbouring pixels' centres, or the grid of one or two.
-class RowOfPrimaryHits {
- public:
-  // `offsets`: where every pixel of the tile places its samples.
-  RowOfPrimaryHits(const TracingContext& context, const ViewFrame& view, const PixelRect& area,
-                   const std::vector<Vec2>& offsets)
-      : context_(context), view_(view), area_(area), offsets_(offsets) {}
-
-  // Sample i of the pixel traced as tracePrimary traces it, from the hit
-  // found with the rest of its row's.
-  SampleResult trace(const glm::ivec2& pixel, int i, TraceCounters& counters, RayTree* tree) {
-    if (pixel.y != row_) findHits(pixel.y);
-    const std::size_t sample = static_cast<std::size_t>(pixel.x - area_.x0) * offsets_.size() +
-                               static_cast<std::size_t>(i);
-    const RayPacket& packet = packets_[sample / kPacketSize];
-    const std::size_t lane = sample % kPacketSize;
-    counters.intersections += packet.costs[lane];
-    SingleRayChoices single;
-    return shadeSearchedPrimary(context_, packet.rays[lane],
-                                packet.found[lane] ? &packet.hits[lane] : nullptr, single, counters,
-                                tree);
-  }
-
- private:
-  void findHits(int y) {
-    row_ = y;
-    packets_.clear();
-    for (int x = area_.x0; x < area_.x1; ++x) {
-      for (const Vec2& offset : offsets_) {
-        if (packets_.empty() || packets_.back().size == kPacketSize) packets_.emplace_back();
-        RayPacket& packet = packets_.back();
-        const Vec2 raster = Vec2(glm::ivec2(x, y)) + offset;
-        packet.rays[static_cast<std::size_t>(packet.size++)] = view_.primaryRay(raster.x, raster.y);
-      }
-    }
-    for (RayPacket& packet : packets_) context_.intersector.nearestOfPacket(packet, 0.0f);
-  }
-
-  const TracingContext& context_;
-  const ViewFrame& view_;
-  PixelRect area_;
-  const std::vector<Vec2>& offsets_;
-  int row_ = -1;
-  std::vector<RayPacket> packets_;
-};
-
-}  // namespace
-
+// A pixel's samples, each traced by a primary ray and the recursion from
+// its hit; a packet of primary rays at a time where every pixel places its
+// samples alike.
 RenderResult WhittedRayTracer::render(const Scene& scene, const RenderSettings& settings,
                                       RenderObserver& observer) const {
-  const SceneIntersector intersector(scene, settings.accel, settings.threads);
-  const TracingContext context{scene, intersector, settings.maxDepth};
-  const ViewFrame view(scene.camera, settings.width, settings.height);
-  const TraceAt traceAt = [&](const Vec2& raster, Rng&, TraceCounters& counters, RayTree* tree) {
-    SingleRayChoices single;
-    return tracePrimary(context, view.primaryRay(raster.x, raster.y), single, counters, tree);
-  };
-  const PixelSampling& sampling = settings.sampling;
-  RenderResult result = traceImage(settings, observer, [&](TileTrace& tile) {
-    if (sampling.pattern == SamplePattern::Adaptive)
-      return sampleAdaptively(tile, settings, traceAt);
-    std::vector<Vec2> offsets;
-    const auto place = [&](const glm::ivec2&, Rng& rng) -> const std::vector<Vec2>& {
-      samplePositions(sampling.pattern, sampling.samples, rng, offsets);
-      return offsets;
-    };
-    if (placesAlikeInEveryPixel(sampling.pattern)) {
-      RowOfPrimaryHits row(context, view, tile.area(), offsets);
-      return tracePixels(tile, settings.seed, place,
-                         [&](const glm::ivec2& pixel, int i, Rng&, TraceCounters& counters,
-                             RayTree* tree) { return row.trace(pixel, i, counters, tree); });
-    }
-    tracePixels(
-        tile, settings.seed, place,
-        [&](const glm::ivec2& pixel, int i, Rng& rng, TraceCounters& counters, RayTree* tree) {
-          return traceAt(Vec2(pixel) + offsets[static_cast<std::size_t>(i)], rng, counters, tree);
-        });
+  return traceTiles(scene, settings, observer, [&](const TracingContext& context, TileTrace& tile) {
+    if (placesAlikeInEveryPixel(settings.sampling.pattern))
+      return traceInPrimaryPackets(context, tile, settings);
+    traceEachSample(tile, settings, {},
+                    [&](const Vec2& raster, SampleValues&, TraceCounters& counters, RayTree* tree) {
+                      SingleRayChoices single;
+                      return tracePrimary(context, context.view.primaryRay(raster.x, raster.y),
+                                          single, counters, tree);
+                    });
   });
-  intersector.addBuildStats(result.stats);
-  return result;
 }
 
 }  // namespace rise

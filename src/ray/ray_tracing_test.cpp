@@ -224,8 +224,8 @@ TEST(WhittedRayTracer, CountsRaysAndTests) {
 TEST(WhittedRayTracer, ShadesAFirstHitInTwoHalvesAsInOne) {
   const Scene scene = first_hit_testing::mirrorGlassAndBlockerScene(40, 30);
   const SceneIntersector intersector(scene, Accel::Bvh, 1);
-  const TracingContext context{scene, intersector, 4};
   const ViewFrame view(scene.camera, scene.image.width, scene.image.height);
+  const TracingContext context{scene, intersector, 4, view};
   int shaded = 0;
   for (int y = 0; y < scene.image.height; ++y) {
     for (int x = 0; x < scene.image.width; ++x) {

@@ -11,21 +11,16 @@
 namespace rise {
 namespace {
 
-// The film (a weighted sum and a weight), the image, the auxiliary buffers
-// and the images written from them, and for the visible-surface algorithms
-// each pass's own image and buffers and their frame's per-pixel arrays.
-constexpr std::uint64_t kRayTracingBytesPerPixel = 112;
-constexpr std::uint64_t kVisibleSurfaceBytesPerPixel = 200;
 // A primitive in the acceleration structure or as polygons on the screen.
 constexpr std::uint64_t kBytesPerPrimitive = 256;
-
-std::uint64_t bytesPerPixel(Family family) {
-  return family == Family::RayTracing ? kRayTracingBytesPerPixel : kVisibleSurfaceBytesPerPixel;
-}
 
 // The offsets and the other dimensions of a pixel's samples, in each thread.
 std::uint64_t bytesPerSample(const Scene& scene, const RenderSettings& settings) {
   return 64 + 8 * (scene.lights.size() + 2 * static_cast<std::uint64_t>(settings.maxDepth));
+}
+
+std::uint64_t pixelsOf(const RenderSettings& settings) {
+  return static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
 }
 
 std::uint64_t primitives(const Scene& scene) {
@@ -44,8 +39,6 @@ const Material* branchingMaterial(const Scene& scene) {
   return branching == scene.materials.end() ? nullptr : &*branching;
 }
 
-// The rays a sample becomes at most: a path down to the maximum depth, or a
-// tree of them where a material branches; each hit with a shadow ray a light.
 double raysPerSample(const Scene& scene, const RenderSettings& settings) {
   const double hits = branchingMaterial(scene) ? std::exp2(settings.maxDepth) - 1.0
                                                : static_cast<double>(settings.maxDepth);
@@ -90,18 +83,19 @@ std::string samplesAPixel(const RenderSettings& settings) {
 
 }  // namespace
 
-RenderNeeds renderNeeds(const Scene& scene, const RenderSettings& settings, Family family) {
-  const auto pixels = static_cast<std::uint64_t>(settings.width) * settings.height;
+RenderNeeds memoryNeeds(const Scene& scene, const RenderSettings& settings,
+                        std::uint64_t bytesPerPixel) {
   const auto samples = static_cast<std::uint64_t>(settings.sampling.samples);
   const auto threads = static_cast<std::uint64_t>(std::max(1, settings.threads));
-  RenderNeeds needs;
-  needs.bytes = pixels * bytesPerPixel(family) +
-                samples * bytesPerSample(scene, settings) * (threads + 1) +
-                primitives(scene) * kBytesPerPrimitive;
-  if (family == Family::RayTracing)
-    needs.rays =
-        static_cast<double>(pixels) * static_cast<double>(samples) * raysPerSample(scene, settings);
-  return needs;
+  return {pixelsOf(settings) * bytesPerPixel +
+              samples * bytesPerSample(scene, settings) * (threads + 1) +
+              primitives(scene) * kBytesPerPrimitive,
+          0.0};
+}
+
+double recursionRays(const Scene& scene, const RenderSettings& settings) {
+  return static_cast<double>(pixelsOf(settings)) * static_cast<double>(settings.sampling.samples) *
+         raysPerSample(scene, settings);
 }
 
 std::uint64_t renderMemoryBudget(std::string* why) {
@@ -126,11 +120,11 @@ std::uint64_t renderMemoryBudget(std::string* why) {
   return budget;
 }
 
-void checkRenderFits(const Scene& scene, const RenderSettings& settings, Family family) {
+void checkRenderFits(const Scene& scene, const RenderSettings& settings, const Renderer& renderer) {
   if (settings.threads > kMostThreads)
     throw RenderLimitError("--threads " + std::to_string(settings.threads) + ": expected at most " +
                            std::to_string(kMostThreads) + " threads");
-  const RenderNeeds needs = renderNeeds(scene, settings, family);
+  const RenderNeeds needs = renderer.needs(scene, settings);
   std::string why;
   const std::uint64_t budget = renderMemoryBudget(&why);
   if (needs.bytes > budget)
@@ -147,7 +141,10 @@ void checkRenderFits(const Scene& scene, const RenderSettings& settings, Family 
         "a " + std::to_string(settings.width) + " x " + std::to_string(settings.height) +
         " image with " + samplesAPixel(settings) + " and --max-depth " +
         std::to_string(settings.maxDepth) + " may trace up to " + count(needs.rays) + " rays (" +
-        count(raysPerSample(scene, settings)) + " a sample" +
+        count(needs.rays /
+              static_cast<double>(pixelsOf(settings) *
+                                  static_cast<std::uint64_t>(settings.sampling.samples))) +
+        " a sample" +
         (branching ? ", as material '" + branching->name + "' both reflects and refracts" : "") +
         "); expected at most " + count(kMostRays) +
         " rays: fewer samples, a smaller image or a lower --max-depth");

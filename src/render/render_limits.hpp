@@ -2,13 +2,14 @@
 // it is reached, so that no scene and no setting makes a render run for
 // days or fill the memory. Each is documented in the README's Limits.
 //
-// Before a render, what it needs is worked out from its settings: the
-// memory of the film, the image and the auxiliary buffers (so many bytes a
-// pixel), of each thread's samples of a pixel, and of the scene's
-// primitives in the structures built from them; and, for the ray tracers,
-// the most rays a sample can become where materials both reflect and refract
-// (each hit then spawns two rays, down to the maximum depth). Those are held
-// against the memory a render may take and the most rays a render may trace.
+// Before a render, the algorithm works out what it needs from its settings
+// (Renderer::needs): the memory of the film, the image and the auxiliary
+// buffers (so many bytes a pixel), of each thread's samples of a pixel, and
+// of the scene's primitives in the structures built from them; and, for
+// those that trace rays, the most rays a sample can become where materials
+// both reflect and refract (each hit then spawns two rays, down to the
+// maximum depth). Those are held against the memory a render may take and
+// the most rays a render may trace.
 #pragma once
 
 #include <cstdint>
@@ -42,21 +43,27 @@ inline constexpr int kMostThreads = 256;
 inline constexpr std::uint64_t kMostDepthSortComparisons = 2'000'000'000;
 inline constexpr std::uint64_t kMostDepthSortSplits = 2'000'000;
 
-// What a render of `family` needs, worked out before it starts.
-struct RenderNeeds {
-  std::uint64_t bytes = 0;
-  double rays = 0.0;  // the most the ray tracers may trace; 0 for the others
-};
-RenderNeeds renderNeeds(const Scene& scene, const RenderSettings& settings, Family family);
+// The parts of what a render needs that every algorithm has, for the
+// algorithms' Renderer::needs: the image, its buffers and whatever else the
+// algorithm keeps of each pixel (`bytesPerPixel`), each thread's samples of
+// a pixel, and the scene's primitives in the structures built from them. No
+// rays.
+RenderNeeds memoryNeeds(const Scene& scene, const RenderSettings& settings,
+                        std::uint64_t bytesPerPixel);
+
+// The most rays a render's samples become where each is Whitted's recursion:
+// a path down to the maximum depth, or a tree of them where a material both
+// reflects and refracts; each hit with a shadow ray a light.
+double recursionRays(const Scene& scene, const RenderSettings& settings);
 
 // The memory a render may take here: the least of kMostRenderMemory, the
 // share of the machine's memory, and what the address-space limit of the
 // process (ulimit -v) leaves of it. `why` says which it is.
 std::uint64_t renderMemoryBudget(std::string* why = nullptr);
 
-// Throws RenderLimitError when a render of `family` needs more than its
+// Throws RenderLimitError when a render by `renderer` needs more than the
 // limits allow, or asks for more than kMostThreads threads.
-void checkRenderFits(const Scene& scene, const RenderSettings& settings, Family family);
+void checkRenderFits(const Scene& scene, const RenderSettings& settings, const Renderer& renderer);
 
 // Throws RenderLimitError when `bytes`, memory an algorithm works out it needs
 // once it knows the polygons on the screen, before it takes it, are more than

@@ -60,6 +60,20 @@ std::string_view toString(Effect effect) {
   return "?";
 }
 
+std::string_view toString(Look look) {
+  switch (look) {
+    case Look::Steps:
+      return "steps";
+    case Look::RayTrees:
+      return "ray trees";
+  }
+  return "?";
+}
+
+bool AlgorithmDescription::offers(Look look) const {
+  return std::find(looks.begin(), looks.end(), look) != looks.end();
+}
+
 bool AlgorithmDescription::writes(std::string_view buffer) const {
   return std::find(buffers.begin(), buffers.end(), buffer) != buffers.end();
 }

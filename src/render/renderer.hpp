@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <string_view>
@@ -86,9 +87,23 @@ enum class Effect {
   Transparency,  // transparent surfaces blended over what is behind them, without refraction
 };
 
+// What a render shows a student of its workings besides its image, when
+// asked: its steps in its own words (`rise explain`, the studio's step
+// player), and the tree of rays behind a pixel (`rise inspect`, a click in the
+// studio's image).
+enum class Look { Steps, RayTrees };
+
+// How the statistics of a render cut into tiles (`--tile`, rise-mpi) make
+// those of the whole image: summed, where each tile counts only its own
+// pixels' work; or any one tile's, where each tile renders the whole image
+// and keeps its part (the visible-surface algorithms draw every polygon at
+// once).
+enum class TileStatistics { Summed, WholeImage };
+
 std::string_view toString(Family family);
 std::string_view toString(Option option);  // as on the command line: "shading"
 std::string_view toString(Effect effect);  // in words: "depth of field"
+std::string_view toString(Look look);      // in words: "ray trees"
 
 // What an algorithm is and offers, for the command line's help, `rise
 // algorithms`, the compare page, the studio and the tests: they read this
@@ -109,10 +124,21 @@ struct AlgorithmDescription {
   // shadows, goes without saying); empty for an algorithm that does not read
   // the option.
   std::vector<ShadowMethod> shadowMethods = {};
+  std::vector<Look> looks = {};
+  TileStatistics tileStatistics = TileStatistics::Summed;
 
+  bool offers(Look look) const;
   bool writes(std::string_view buffer) const;
   bool reads(Option option) const;
   bool draws(ShadowMethod method) const;
+};
+
+// What a render needs, worked out from its settings before it starts, for
+// the limits (render/render_limits.hpp): the memory it takes at most, and
+// the most rays it may trace (0 for an algorithm that traces none).
+struct RenderNeeds {
+  std::uint64_t bytes = 0;
+  double rays = 0.0;
 };
 
 // One image synthesis algorithm. The command line, the studio, the tests and
@@ -123,6 +149,8 @@ class Renderer {
 
   virtual const AlgorithmDescription& description() const = 0;
   std::string_view name() const { return description().name; }
+
+  virtual RenderNeeds needs(const Scene& scene, const RenderSettings& settings) const = 0;
 
   virtual RenderResult render(const Scene& scene, const RenderSettings& settings,
                               RenderObserver& observer) const = 0;

@@ -2,19 +2,9 @@
 
 #include <cmath>
 
-#include "core/sampling.hpp"
+#include "core/warps.hpp"
 
 namespace rise {
-
-void orthonormalBasis(const Vec3& axis, Vec3& u, Vec3& v) {
-  // Frisvad's construction as revised by Duff et al. (JCGT 2017): branchless
-  // but for the sign, and exact for every unit axis.
-  const float sign = std::copysign(1.0f, axis.z);
-  const float a = -1.0f / (sign + axis.z);
-  const float b = axis.x * axis.y * a;
-  u = Vec3(1.0f + sign * axis.x * axis.x * a, sign * b, -sign * axis.x);
-  v = Vec3(b, sign + axis.y * axis.y * a, -axis.y);
-}
 
 DiskLight::DiskLight(Vec3 center, Vec3 normal, float radius, Color color)
     : Light(color), center_(center) {

@@ -123,8 +123,4 @@ class SphereLight final : public Light {
   float radius_;
 };
 
-// Two unit vectors that complete `axis` (unit) to a right-handed
-// orthonormal basis.
-void orthonormalBasis(const Vec3& axis, Vec3& u, Vec3& v);
-
 }  // namespace rise

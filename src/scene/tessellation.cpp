@@ -6,7 +6,7 @@
 #include <numeric>
 #include <utility>
 
-#include "scene/light.hpp"
+#include "core/warps.hpp"
 #include "scene/mesh_geometry.hpp"
 #include "scene/shape.hpp"
 

@@ -280,6 +280,28 @@ expect-value camera/fov 46.826449
             0);
 }
 
+// Every algorithm that records ray trees shows a clicked pixel's in the
+// studio, as `rise inspect` prints it: the hybrid's too.
+TEST_F(Studio, ShowsTheRayTreeOfAClickedPixelForEveryAlgorithmThatRecordsThem) {
+  for (const std::string algorithm : {"hybrid", "distributed-ray-tracing"}) {
+    ASSERT_EQ(
+        runSession("open ${RISE_SOURCE_DIR}/examples/classic.yaml\nalgorithm " + algorithm +
+                   "\nclick Render\nwait\nclick-pixel 320 230\nwait\nsave-tree ${OUT}/tree.txt\n"),
+        0)
+        << algorithm;
+    const std::string tree = fileText(directory_ / "tree.txt");
+    int x = 0, y = 0;
+    ASSERT_EQ(std::sscanf(tree.c_str(), "pixel %d,%d:", &x, &y), 2) << algorithm << ": " << tree;
+    EXPECT_NE(tree.find("refraction ray"), std::string::npos) << tree;
+    ASSERT_EQ(
+        runCli("inspect '" + kClassic + "' -a " + algorithm + " --pixel " + std::to_string(x) +
+               "," + std::to_string(y) + " > '" + (directory_ / "inspect.txt").string() + "'"),
+        0);
+    EXPECT_EQ(tree, fileText(directory_ / "inspect.txt")) << algorithm;
+    std::filesystem::remove(directory_ / "tree.txt");
+  }
+}
+
 TEST_F(Studio, ShowsTheStepsAndThe3dViewInTabsOfOneWindow) {
   // Recorded steps come forward in their tab; a clicked pixel brings the 3D
   // view, where its rays are drawn, back; neither window covers the other.

@@ -124,4 +124,24 @@ inline MeshGeometry squareGrid(int side, const std::function<Vec3(Vec2)>& place)
   return geometry;
 }
 
+// dP/du and dP/dv are the rates of change of the position with the mapping's
+// coordinates along the surface: a step along dP/du (back onto the surface)
+// moves u alone.
+inline void expectTangentsMatchTheMapping(const Shape& shape, const Vec3& origin,
+                                          const Vec3& direction) {
+  const auto at = intersect(shape, Ray{origin, direction});
+  ASSERT_TRUE(at.found);
+  const float step = 1e-3f;
+  for (int axis = 0; axis < 2; ++axis) {
+    const Vec3 tangent = axis == 0 ? at.surface.dpdu : at.surface.dpdv;
+    const auto there = intersect(
+        shape,
+        Ray{at.surface.position + step * tangent + 0.1f * at.surface.normal, -at.surface.normal});
+    ASSERT_TRUE(there.found);
+    const Vec2 change = (there.surface.uv - at.surface.uv) / step;
+    EXPECT_NEAR(change[axis], 1.0f, 2e-2f) << "axis " << axis;
+    EXPECT_NEAR(change[1 - axis], 0.0f, 2e-2f) << "axis " << axis;
+  }
+}
+
 }  // namespace rise::shape_testing

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "scene/light.hpp"
+#include "core/warps.hpp"
 
 namespace rise {
 

@@ -1,9 +1,9 @@
-#include "tile_stats.hpp"
+#include "render/tile_statistics.hpp"
 
 #include <string>
 #include <string_view>
 
-namespace rise::mpi {
+namespace rise {
 namespace {
 
 constexpr std::string_view kPerRay = "_per_ray";
@@ -14,9 +14,10 @@ bool endsWith(const std::string& text, std::string_view end) {
 
 }  // namespace
 
-Stats combinedTileStats(Family family, const std::vector<Stats>& tiles, double seconds) {
+Stats combinedTileStats(const AlgorithmDescription& algorithm, const std::vector<Stats>& tiles,
+                        double seconds) {
   Stats totals;
-  if (family == Family::RayTracing)
+  if (algorithm.tileStatistics == TileStatistics::Summed)
     for (const Stats& tile : tiles) totals.accumulate(tile);
   else if (!tiles.empty())
     totals = tiles.front();
@@ -37,4 +38,4 @@ Stats combinedTileStats(Family family, const std::vector<Stats>& tiles, double s
   return combined;
 }
 
-}  // namespace rise::mpi
+}  // namespace rise
