@@ -171,6 +171,12 @@ inline ChiSquareOutcome chiSquareOnSquare(const std::function<std::optional<Vec2
   return outcome;
 }
 
+// The angle of (x, y) about the origin as a fraction of a turn, in [0, 1).
+inline float turnOf(float x, float y) {
+  const float turn = std::atan2(y, x) / (2.0f * kPi);
+  return turn < 0.0f ? turn + 1.0f : turn;
+}
+
 // A warp of the unit square onto the unit sphere's directions, against its
 // density per steradian.
 inline ChiSquareOutcome chiSquareOfDirections(const std::function<Vec3(const Vec2&)>& warp,
@@ -180,9 +186,7 @@ inline ChiSquareOutcome chiSquareOfDirections(const std::function<Vec3(const Vec
     const float u = rng.uniform();
     const Vec3 direction = warp({u, rng.uniform()});
     if (std::abs(glm::length(direction) - 1.0f) > 1e-4f) return std::nullopt;
-    float phi = std::atan2(direction.y, direction.x);
-    if (phi < 0.0f) phi += 2.0f * kPi;
-    return Vec2((direction.z + 1.0f) / 2.0f, phi / (2.0f * kPi));
+    return Vec2((direction.z + 1.0f) / 2.0f, turnOf(direction.x, direction.y));
   };
   // dw = dz dphi = (2 da) (2 pi db).
   const auto onSquare = [&](double a, double b) {
@@ -205,9 +209,7 @@ inline ChiSquareOutcome chiSquareOfDiskPoints(const std::function<Vec2(const Vec
     const Vec2 point = warp({u, rng.uniform()});
     const float squared = glm::dot(point, point);
     if (squared > 1.0f + 1e-5f) return std::nullopt;
-    float angle = std::atan2(point.y, point.x);
-    if (angle < 0.0f) angle += 2.0f * kPi;
-    return Vec2(std::min(squared, 1.0f), angle / (2.0f * kPi));
+    return Vec2(std::min(squared, 1.0f), turnOf(point.x, point.y));
   };
   // dA = r dr dangle = (da / 2) (2 pi db).
   const auto onSquare = [&](double a, double b) {
