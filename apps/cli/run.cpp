@@ -131,7 +131,7 @@ Verdicts verdictsOn(const Job& job) {
 // algorithm, as `rise render -a ALGORITHM` would with no other option; names
 // those that would refuse, and why.
 int validate(const std::string& scenePath) {
-  std::variant<Job, int> prepared = prepare({scenePath, {}}, {});
+  std::variant<Job, int> prepared = prepare({scenePath, {}}, std::span<const Renderer* const>{});
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   const Job& job = std::get<Job>(prepared);
   const Scene& scene = job.scene;
