@@ -1,8 +1,9 @@
 // Every example scene, as a student first meets it: it loads, and every
 // algorithm renders it, small, to a finite image that shows more than the
-// background; and the four visible-surface algorithms, which share one
-// pipeline, see the same polygon at nearly every pixel. A scene added to
-// examples/ is checked without a line more here.
+// background, with finite statistics, the same on any number of threads;
+// and the four visible-surface algorithms, which share one pipeline, see the
+// same polygon at nearly every pixel. A scene added to examples/ is checked
+// without a line more here.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -77,6 +78,8 @@ TEST_P(ExampleScene, RendersWithEveryAlgorithm) {
     EXPECT_EQ(finitePixels(result.image), kWidth * kHeight) << renderer->name();
     EXPECT_GT(pixelsOtherThan(result.image, scene.image.background), kWidth * kHeight / 10)
         << renderer->name();
+    for (const auto& [name, value] : result.stats.entries())
+      EXPECT_TRUE(std::isfinite(value)) << renderer->name() << "'s " << name << " is " << value;
   }
 }
 
@@ -101,6 +104,33 @@ TEST_P(ExampleScene, RendersWithEveryAlgorithmAtEverySizeInSeconds) {
       EXPECT_EQ(finitePixels(result.image), width * height) << label;
       EXPECT_LT(seconds.count(), kSecondsARenderTakes) << label;
     }
+  }
+}
+
+// The statistics that count work, not the time it took.
+std::vector<std::pair<std::string, double>> counters(const Stats& stats) {
+  std::vector<std::pair<std::string, double>> counted;
+  for (const auto& [name, value] : stats.entries())
+    if (!name.ends_with("seconds") && !name.ends_with("per_second"))
+      counted.emplace_back(name, value);
+  return counted;
+}
+
+// The tasks a render is cut into are combined in their order, whichever
+// thread drew them, and each pixel's random samples are drawn from its own
+// seed: the image and the counters are the same on any number of threads.
+TEST_P(ExampleScene, IsTheSameWithEveryAlgorithmOnAnyNumberOfThreads) {
+  const Scene scene = load(GetParam());
+  RenderRequest request;
+  request.image = {kWidth, kHeight, 4, SamplePattern::Jittered, FilterKind::Box, {}};
+  RenderSettings settings = settingsFor(scene, request);
+  for (const Renderer* renderer : allRenderers()) {
+    settings.threads = 1;
+    const RenderResult one = render(renderer->name(), scene, settings);
+    settings.threads = 3;
+    const RenderResult three = render(renderer->name(), scene, settings);
+    EXPECT_EQ(one.image.pixels(), three.image.pixels()) << renderer->name();
+    EXPECT_EQ(counters(one.stats), counters(three.stats)) << renderer->name();
   }
 }
 

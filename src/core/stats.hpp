@@ -10,6 +10,11 @@ namespace rise {
 // What a render measured, as named numbers in the order they were added:
 // time, rays by kind, intersection tests... The CLI prints them, --stats
 // writes them as JSON, and the compare table puts algorithms side by side.
+// A count per unit of another (intersection tests per ray): 0 where there
+// are none of those units, as where a hybrid finds every first hit in its
+// item buffer and traces no ray, so that a table shows no "inf" or "nan".
+inline double perEach(double count, double units) { return units > 0.0 ? count / units : 0.0; }
+
 class Stats {
  public:
   void add(std::string name, double value) { entries_.emplace_back(std::move(name), value); }

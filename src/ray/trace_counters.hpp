@@ -34,10 +34,10 @@ struct TraceCounters {
     stats.add("refraction_rays", static_cast<double>(refractionRays));
     stats.add("intersection_tests", static_cast<double>(intersections.tests));
     stats.add("intersection_tests_per_ray",
-              static_cast<double>(intersections.tests) / static_cast<double>(rays()));
+              perEach(static_cast<double>(intersections.tests), static_cast<double>(rays())));
     stats.add("nodes_visited", static_cast<double>(intersections.nodesVisited));
-    stats.add("nodes_visited_per_ray",
-              static_cast<double>(intersections.nodesVisited) / static_cast<double>(rays()));
+    stats.add("nodes_visited_per_ray", perEach(static_cast<double>(intersections.nodesVisited),
+                                               static_cast<double>(rays())));
   }
 };
 

@@ -26,10 +26,10 @@ Stats combinedTileStats(const AlgorithmDescription& algorithm, const std::vector
     if (name == "render_seconds")
       combined.add(name, seconds);
     else if (name == "rays_per_second")
-      combined.add(name, totals.value("rays") / seconds);
+      combined.add(name, perEach(totals.value("rays"), seconds));
     else if (endsWith(name, kPerRay))
-      combined.add(
-          name, totals.value(name.substr(0, name.size() - kPerRay.size())) / totals.value("rays"));
+      combined.add(name, perEach(totals.value(name.substr(0, name.size() - kPerRay.size())),
+                                 totals.value("rays")));
     else if (name == "samples_per_pixel")  // a setting, the same in every tile
       combined.add(name, tiles.front().value(name));
     else
