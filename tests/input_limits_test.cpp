@@ -33,8 +33,7 @@ std::string errorOf(Load load) {
 
 TEST(InputLimits, AStreamThatNeverEndsIsNotASceneFile) {
   EXPECT_EQ(errorOf<SceneError>([] { loadSceneFile("/dev/zero"); }),
-            "/dev/zero: the scene file is larger than the 16 MB that RISE reads; expected a "
-            "scene, with large meshes in model files (mesh: {file})");
+            "/dev/zero: not a regular file (a device or a pipe); expected a file on disk");
   std::istringstream large(std::string(kLargestSceneFile + 1, '#'));
   EXPECT_EQ(errorOf<SceneError>([&] { loadSceneStream(large, "<stdin>"); }).substr(0, 45),
             "<stdin>: the scene file is larger than the 16");

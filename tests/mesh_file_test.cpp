@@ -223,10 +223,10 @@ TEST_F(MeshFiles, AMissingFileOrAFolderIsRefused) {
 TEST_F(MeshFiles, AnUnsupportedFormatIsRefused) {
   EXPECT_EQ(reasonLoading(write("notes.txt", "not a model")),
             "'.txt' is not a model format that RISE reads; expected .obj, .ply, .md2, .gltf, "
-            ".glb, .off or .3ds");
+            ".glb, .off, .3ds or .stl");
   EXPECT_EQ(reasonLoading(write("model", "v 0 0 0\n")),
             "the file name has no extension to tell its format; expected .obj, .ply, .md2, "
-            ".gltf, .glb, .off or .3ds");
+            ".gltf, .glb, .off, .3ds or .stl");
 }
 
 TEST_F(MeshFiles, AnEmptyFileIsRefused) {

@@ -10,6 +10,7 @@
 #include "io/animated_png.hpp"
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
+#include "option_checks.hpp"
 
 namespace rise::cli {
 namespace {
@@ -63,11 +64,11 @@ void addAnimationOptions(CLI::App& command, AnimationOptions& options) {
   command
       .add_option("--array-index", options.arrayIndex,
                   "With --frames: this task's number in a job array, from 0")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wholeNumberFrom(0));
   command
       .add_option("--array-size", options.arraySize,
                   "With --frames: the tasks of the job array; each renders every Nth frame")
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumberFrom(1));
   command.add_option("--video", options.video,
                      "With --frames: join the frames into this film: an animated PNG (.png, "
                      ".apng), or a video (.mp4) made by ffmpeg, or an animated PNG without it");

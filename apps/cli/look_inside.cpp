@@ -7,6 +7,7 @@
 #include "algorithms/registry.hpp"
 #include "core/text.hpp"
 #include "job.hpp"
+#include "option_checks.hpp"
 #include "reports/ray_tree_picture.hpp"
 #include "reports/ray_tree_text.hpp"
 #include "reports/step_json.hpp"
@@ -172,7 +173,7 @@ std::function<std::optional<int>()> addLookInsideCommands(CLI::App& app) {
   explainCommand
       ->add_option("--every", explainOptions->every,
                    "Show every Nth step (default: as many as keep about 200)")
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumberFrom(1));
   explainCommand->add_flag(
       "--shapes", explainOptions->framesWithShapes,
       "Also write shapes/NNNN.png: each frame with the step's shapes (windows, "

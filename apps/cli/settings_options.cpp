@@ -1,5 +1,8 @@
 #include "settings_options.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -10,6 +13,7 @@
 #include "core/text.hpp"
 #include "io/scene_file.hpp"
 #include "job.hpp"
+#include "option_checks.hpp"
 #include "render/render_limits.hpp"
 
 namespace rise::cli {
@@ -30,24 +34,6 @@ CLI::Validator choices(std::map<std::string, Enum> names) {
         return given + "; expected one of " + expected;
       },
       "{" + expected + "}");
-}
-
-// The value's text and what was expected of it, as CLI11 shows it after the
-// option's name: "--width: 0; expected a whole number from 1 to 32768".
-template <typename Number>
-CLI::Validator wholeNumberFrom(Number least, Number most) {
-  const std::string expected =
-      "expected a whole number from " + std::to_string(least) + " to " + std::to_string(most);
-  return CLI::Validator(
-      [=](const std::string& text) -> std::string {
-        Number value{};
-        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (error == std::errc() && end == text.data() + text.size() && value >= least &&
-            value <= most)
-          return {};
-        return text + "; " + expected;
-      },
-      "in [" + std::to_string(least) + ", " + std::to_string(most) + "]");
 }
 
 CLI::Validator finitePositiveNumber() {
@@ -79,17 +65,17 @@ void addShadowOptions(CLI::App& command, RenderSettings& settings) {
       ->transform(choicesNamedBy(kAllShadowMethods, shadowMethodName));
   command.add_option("--shadow-map-size", settings.shadowMapSize, "Shadow maps: texels a side")
       ->capture_default_str()
-      ->check(CLI::Range(16, 8192));
+      ->check(wholeNumberFrom(16, 8192));
   command
       .add_option("--shadow-bias", settings.shadowBias,
                   "Shadow maps: the bias in texels, scaled by the surface's slope")
       ->capture_default_str()
-      ->check(CLI::Range(0.0f, 1000.0f));
+      ->check(numberFrom(0.0, 1000.0));
   command
       .add_option("--shadow-filter", settings.shadowFilter,
                   "Shadow maps: percentage-closer filtering over (2 R + 1)^2 texels; 0: none")
       ->capture_default_str()
-      ->check(CLI::Range(0, 16));
+      ->check(wholeNumberFrom(0, 16));
 }
 
 }  // namespace
@@ -163,10 +149,9 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
       ->transform(choicesNamedBy(kAllTransparencies, transparencyName));
 }
 
-CLI::CheckedTransformer encodings() {
-  return CLI::CheckedTransformer(
-      std::map<std::string, Encoding>{{"srgb", Encoding::Srgb}, {"linear", Encoding::Linear}},
-      CLI::ignore_case);
+CLI::Validator encodings() {
+  return choices(
+      std::map<std::string, Encoding>{{"srgb", Encoding::Srgb}, {"linear", Encoding::Linear}});
 }
 
 void addEncodingOption(CLI::App& command, Encoding& encoding) {
@@ -176,6 +161,12 @@ void addEncodingOption(CLI::App& command, Encoding& encoding) {
 
 Scene loadScene(const std::string& path) {
   if (path != "-") return loadSceneFile(path);
+  // A folder opens as standard input and reads as nothing, an empty scene.
+  struct stat standardInput {};
+  if (fstat(STDIN_FILENO, &standardInput) == 0 && S_ISDIR(standardInput.st_mode))
+    throw SceneError("<stdin>",
+                     "standard input is a folder; expected a scene (rise render - < "
+                     "scene.yaml)");
   return loadSceneStream(std::cin, "<stdin>");
 }
 

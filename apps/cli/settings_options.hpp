@@ -18,7 +18,7 @@ struct SettingsOptions {
 void addSettingsOptions(CLI::App& command, SettingsOptions& options);
 
 // The --encoding option's names: srgb, linear.
-CLI::CheckedTransformer encodings();
+CLI::Validator encodings();
 
 // Adds --encoding, how the images written store their values.
 void addEncodingOption(CLI::App& command, Encoding& encoding);

@@ -16,6 +16,7 @@
 #include "distributed_compare.hpp"
 #include "distributed_render.hpp"
 #include "job.hpp"
+#include "option_checks.hpp"
 
 namespace rise::mpi {
 namespace {
@@ -35,7 +36,7 @@ CLI::App* addRenderCommand(CLI::App& app, DistributedRenderOptions& options) {
       ->add_option("--tile-size", options.tileSize,
                    "The side of the square tiles handed out, in pixels")
       ->capture_default_str()
-      ->check(CLI::Range(1, 4096));
+      ->check(cli::wholeNumberFrom(1, 4096));
   return command;
 }
 

@@ -23,15 +23,26 @@ inline constexpr float kRayEpsilon = 1e-4f;
 
 inline float radians(float degrees) { return degrees * (kPi / 180.0f); }
 
-// The unit vector along v; zero for zero, which has no direction.
-inline Vec3 normalizedOrZero(const Vec3& v) {
-  const float length = glm::length(v);
-  return length > 0.0f ? v / length : Vec3(0.0f);
-}
-
 // Whether no component is NaN or infinite.
 inline bool isFinite(const Vec3& v) {
   return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+inline float maxComponent(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
+
+// The unit vector along v; zero for zero, which has no direction, and for a
+// vector that is not finite. A finite v of any length has one: v is first
+// scaled by its largest component, so that its squared length neither
+// overflows (a length of 1e20) nor underflows.
+inline Vec3 normalizedOrZero(const Vec3& v) {
+  // Below this length, the squared length loses precision or underflows.
+  constexpr float kShortest = 1e-18f;
+  const float length = glm::length(v);
+  if (length > kShortest && length < kInfinity) return v / length;
+  const float largest = maxComponent(glm::abs(v));
+  if (!(largest > 0.0f) || !isFinite(v)) return Vec3(0.0f);
+  const Vec3 scaled = v / largest;
+  return scaled / glm::length(scaled);
 }
 
 // The corner after corner i of a polygon of `count` corners, the last
@@ -40,8 +51,6 @@ inline bool isFinite(const Vec3& v) {
 inline std::size_t nextCorner(std::size_t i, std::size_t count) {
   return i + 1 < count ? i + 1 : 0;
 }
-
-inline float maxComponent(const Vec3& v) { return glm::max(v.x, glm::max(v.y, v.z)); }
 
 // The axis (0, 1 or 2) of the largest component, the first of equals.
 inline int largestAxis(const Vec3& v) {

@@ -1,9 +1,10 @@
-// Small text helpers: names matched regardless of case, and lists of names
-// as messages and steps show them.
+// Small text helpers: names matched regardless of case, lists of names as
+// messages and steps show them, and a name from a file as a message quotes it.
 #pragma once
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -37,6 +38,32 @@ std::string joined(const Names& names, std::string_view separator = ", ") {
   std::string text;
   for (const auto& name : names) appendListed(text, separator, name);
   return text;
+}
+
+// A name or value from a file as a message quotes it, in single quotes (or
+// `quote`), on
+// one line: a control character (a NUL, a line end) is written as its code,
+// \x00, so that it neither cuts the message short nor breaks its line, and
+// a name longer than 40 letters is shortened, with its length told.
+inline std::string inQuotes(std::string_view text, char quote = '\'') {
+  constexpr std::size_t kLongestShown = 40;
+  // Cut before a letter's first byte, not inside a letter of UTF-8.
+  std::size_t end = std::min(text.size(), kLongestShown);
+  while (end > 0 && end < text.size() && (static_cast<unsigned char>(text[end]) & 0xc0) == 0x80)
+    --end;
+  std::string shown(1, quote);
+  for (const char c : text.substr(0, end)) {
+    const auto code = static_cast<unsigned char>(c);
+    if (code >= 0x20 && code != 0x7f) {
+      shown += c;
+      continue;
+    }
+    char escaped[8];
+    std::snprintf(escaped, sizeof escaped, "\\x%02x", code);
+    shown += escaped;
+  }
+  if (end == text.size()) return shown + quote;
+  return shown + "..." + quote + " (" + std::to_string(text.size()) + " characters)";
 }
 
 }  // namespace rise

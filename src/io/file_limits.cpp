@@ -13,6 +13,8 @@ std::optional<std::string> fileKindOrSizeProblem(const std::filesystem::path& pa
                                                  std::uintmax_t limit) {
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (error == std::errc::too_many_symbolic_link_levels)
+    return "cannot open the file: its symbolic links lead round in a loop";
   if (error || status.type() == std::filesystem::file_type::not_found) return std::nullopt;
   if (std::filesystem::is_directory(status))
     return "cannot open the file (" + std::make_error_code(std::errc::is_a_directory).message() +

@@ -21,9 +21,12 @@ inline constexpr std::int64_t kMostImagePixels = 8192LL * 4096;
 // "16 MB".
 std::string megabytes(std::uintmax_t bytes);
 
-// Why the file at `path`, if there is one, cannot be read whole: it is a
-// folder, not a regular file (a device, a pipe), or larger than `limit`.
-// Nothing when it can, or when it is missing (opening it says why).
+// Why the file at `path`, if there is one, cannot be read whole: its links
+// loop, it is a folder, not a regular file (a device, a pipe, which might
+// never end), or larger than `limit`. Nothing when it can, or when it is
+// missing (opening it says why). Every file RISE reads is asked first: the
+// scene, and every model, image and side file (an OBJ's materials, a glTF's
+// buffers) a file names.
 std::optional<std::string> fileKindOrSizeProblem(const std::filesystem::path& path,
                                                  std::uintmax_t limit);
 

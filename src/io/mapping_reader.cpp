@@ -43,14 +43,14 @@ Mapping readTurningMapping(const Field& field) {
   const MapEntry entry = readMap(field, expectation, field.name).front();
   const std::vector<std::string> names = mappingNames();
   if (std::find(names.begin(), names.end(), entry.key) == names.end())
-    failAt(entry.keyMark, "unknown mapping '" + entry.key + "' in " + field.name + "; " +
+    failAt(entry.keyMark, "unknown mapping " + inQuotes(entry.key) + " in " + field.name + "; " +
                               suggestAlternative(entry.key, names));
   if (std::find(kTurning.begin(), kTurning.end(), entry.key) == kTurning.end())
     failAt(entry.keyMark, "the " + entry.key + " mapping takes no axis; expected 'mapping: " +
                               entry.key + "', or an axis for spherical or cylindrical");
   const std::string name = "the " + entry.key + " mapping";
   const CheckedMap properties(makeField(entry.value, name, entry.keyMark), name, {"axis"});
-  return {*projectionNamed(entry.key), glm::normalize(readDirection(properties.required("axis")))};
+  return {*projectionNamed(entry.key), readDirection(properties.required("axis"))};
 }
 
 }  // namespace

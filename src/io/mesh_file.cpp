@@ -24,6 +24,7 @@
 
 #include "core/shared_library.hpp"
 #include "core/text.hpp"
+#include "io/checked_model_files.hpp"
 #include "io/file_limits.hpp"
 #include "io/model_headers.hpp"
 #include "scene/vertex_normals.hpp"
@@ -36,7 +37,6 @@ namespace {
 // first model is read: a scene without one does not pay for loading it.
 struct AssimpFunctions {
   SharedLibrary library{RISE_ASSIMP_LIBRARY};
-  RISE_LIBRARY_FUNCTION(library, aiIsExtensionSupported);
   RISE_LIBRARY_FUNCTION(library, aiCreatePropertyStore);
   RISE_LIBRARY_FUNCTION(library, aiSetImportPropertyInteger);
   RISE_LIBRARY_FUNCTION(library, aiReleasePropertyStore);
@@ -58,7 +58,12 @@ struct SceneRelease {
 };
 using AssimpScene = std::unique_ptr<const aiScene, SceneRelease>;
 
-const std::string kFormatExamples = ".obj, .ply, .md2, .gltf, .glb, .off or .3ds";
+// The formats the manual lists, each read by Assimp's importer for it. Its
+// importers for other formats are not used: several of them crash or never
+// return on a corrupt file (MD5, ASE, OpenGEX, SMD).
+const std::vector<std::string> kModelFormats = {".obj", ".ply", ".md2", ".gltf",
+                                                ".glb", ".off", ".3ds", ".stl"};
+const std::string kFormatExamples = ".obj, .ply, .md2, .gltf, .glb, .off, .3ds or .stl";
 
 // The file must exist, be a regular file within the size RISE reads, open,
 // and hold something.
@@ -92,13 +97,14 @@ std::span<const std::uint8_t> bytesOf(const std::string& text) {
   return {reinterpret_cast<const std::uint8_t*>(text.data()), text.size()};
 }
 
-void checkFormatIsSupported(const std::filesystem::path& path, const AssimpFunctions& assimp) {
+void checkFormatIsSupported(const std::filesystem::path& path) {
   const std::string extension = path.extension().string();
   if (extension.empty())
     throw MeshFileError("the file name has no extension to tell its format; expected " +
                         kFormatExamples);
-  if (assimp.aiIsExtensionSupported(extension.c_str()) != AI_TRUE)
-    throw MeshFileError("'" + extension + "' is not a model format that RISE reads; expected " +
+  if (std::find(kModelFormats.begin(), kModelFormats.end(), lowercase(extension)) ==
+      kModelFormats.end())
+    throw MeshFileError(inQuotes(extension) + " is not a model format that RISE reads; expected " +
                         kFormatExamples);
 }
 
@@ -225,9 +231,11 @@ AssimpScene readWithAssimp(const AssimpFunctions& assimp, const std::filesystem:
       assimp.aiCreatePropertyStore(), assimp.aiReleasePropertyStore);
   assimp.aiSetImportPropertyInteger(properties.get(), AI_CONFIG_IMPORT_MD2_KEYFRAME, md2Keyframe);
   // Validation comes first, so that no later step reads a corrupt index.
+  CheckedModelFiles files;
   AssimpScene read(assimp.aiImportFileExWithProperties(
-                       path.c_str(), aiProcess_ValidateDataStructure, nullptr, properties.get()),
+                       path.c_str(), aiProcess_ValidateDataStructure, files.io(), properties.get()),
                    SceneRelease{assimp.aiReleaseImport});
+  if (files.refused()) throw MeshFileError("cannot read a file it names: " + *files.refused());
   if (!read) throw MeshFileError(explained(tidied(assimp.aiGetErrorString())));
   // Assimp owns the scene it read and lets it be changed between steps.
   checkFacesAndTheirTypes(const_cast<aiScene&>(*read));
@@ -269,8 +277,7 @@ MeshGeometry geometryOf(const aiMesh& mesh, bool joinVertices) {
     geometry.positions.push_back(toVec3(mesh.mVertices[i]));
     if (mesh.HasNormals()) {
       const Vec3 normal = toVec3(mesh.mNormals[i]);
-      const float length = glm::length(normal);
-      geometry.normals.push_back(isFinite(normal) && length > 0.0f ? normal / length : Vec3(0.0f));
+      geometry.normals.push_back(isFinite(normal) ? normalizedOrZero(normal) : Vec3(0.0f));
     }
     if (mesh.HasTextureCoords(0))
       geometry.uvs.emplace_back(mesh.mTextureCoords[0][i].x, mesh.mTextureCoords[0][i].y);
@@ -307,9 +314,9 @@ void appendNode(const aiScene& scene, const aiNode& node, const Mat4& parentToFi
 
 MeshGeometry readModel(const std::filesystem::path& path, int md2Keyframe) {
   checkReadable(path);
-  const AssimpFunctions& assimp = loadedAssimp();
-  checkFormatIsSupported(path, assimp);
+  checkFormatIsSupported(path);
   checkHeader(path);
+  const AssimpFunctions& assimp = loadedAssimp();
   const AssimpScene read = readWithAssimp(assimp, path, md2Keyframe);
   const aiScene& scene = *read;
   MeshGeometry model;

@@ -1,6 +1,6 @@
 // Triangle meshes read from model files through the Open Asset Import Library
-// (Assimp): Wavefront OBJ, Stanford PLY, Quake II MD2, glTF, OFF, 3DS and the
-// other formats it reads. A file's meshes are merged into one, each placed by
+// (Assimp): Wavefront OBJ, Stanford PLY, Quake II MD2, glTF, OFF, 3DS and STL,
+// and no other of the formats Assimp reads. A file's meshes are merged into one, each placed by
 // the transforms of the nodes above it, so that the model stands as its
 // author built it (Assimp turns MD2's z-up models y-up this way).
 #pragma once

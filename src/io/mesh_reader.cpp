@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "core/text.hpp"
 #include "io/image_io.hpp"
 #include "io/mapping_reader.hpp"
 #include "io/mesh_file.hpp"
@@ -65,7 +66,8 @@ void checkKeyframesExist(const std::vector<Field>& fields, const std::vector<int
   for (std::size_t i = 0; i < fields.size(); ++i) {
     if (keyframes[i] >= keyframeCount)
       failExpected(fields[i], "a keyframe from 0 to " + std::to_string(keyframeCount - 1) +
-                                  ", as '" + fileName + "' has " + std::to_string(keyframeCount));
+                                  ", as " + inQuotes(fileName) + " has " +
+                                  std::to_string(keyframeCount));
   }
 }
 
@@ -88,8 +90,8 @@ std::unique_ptr<Shape> readMeshFile(const CheckedMap& mesh, const Field& file, i
     keyframeFields = readList(*frames, "a list of 2 keyframes [first, second]",
                               "a keyframe of 'frames' in mesh", 2, 2);
   if (const std::optional<Field>& posing = frame ? frame : frames; posing && !isMd2File(path))
-    failAt(posing->mark, posing->name + " picks keyframes of an MD2 model; '" + fileName +
-                             "' is not an MD2 file");
+    failAt(posing->mark, posing->name + " picks keyframes of an MD2 model; " + inQuotes(fileName) +
+                             " is not an MD2 file");
   std::vector<int> keyframes;
   for (const Field& field : keyframeFields)
     keyframes.push_back(readWholeNumber(field, Bound::NonNegative));
@@ -106,7 +108,7 @@ std::unique_ptr<Shape> readMeshFile(const CheckedMap& mesh, const Field& file, i
     mapAndPlace(mesh, poses, worldFromObject);
     return std::make_unique<TriangleMesh>(std::move(poses[0]), material);
   } catch (const MeshFileError& error) {
-    failAt(file.mark, "cannot load mesh '" + fileName + "': " + error.what());
+    failAt(file.mark, "cannot load mesh " + inQuotes(fileName) + ": " + error.what());
   }
 }
 
@@ -133,7 +135,7 @@ std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4
   return readInlineMesh(mesh, material, worldFromObject);
 }
 
-int withMd2Skin(const CheckedMap& mesh, int material, std::vector<Material>& materials,
+int withMd2Skin(const CheckedMap& mesh, int material, SceneMaterials& materials,
                 SceneFiles& files) {
   const std::optional<Field> file = mesh.optional("file");
   if (!file || materials[material].texture) return material;
@@ -142,22 +144,18 @@ int withMd2Skin(const CheckedMap& mesh, int material, std::vector<Material>& mat
   const std::optional<std::filesystem::path> skin = findMd2Skin(model);
   if (!skin) return material;
   const std::string name = materials[material].name + " with " + skin->filename().string();
-  const auto worn = std::find_if(materials.begin(), materials.end(),
-                                 [&](const Material& m) { return m.name == name; });
-  if (worn != materials.end()) return static_cast<int>(worn - materials.begin());
+  if (const std::optional<int> worn = materials.find(name)) return *worn;
   Material skinned = materials[material];
   skinned.name = name;
   std::vector<std::string> warnings;
   try {
-    skinned.texture = std::make_shared<ImageTexture>(
-        std::make_shared<const Image>(readImage(*skin, Encoding::Srgb, &warnings)),
-        TextureFilter::Bilinear);
+    skinned.texture = files.imageTexture(*skin, Encoding::Srgb, TextureFilter::Bilinear, warnings);
   } catch (const ImageFileError& error) {
-    failAt(file->mark, "cannot load the skin of mesh '" + readName(*file) + "': " + error.what());
+    failAt(file->mark,
+           "cannot load the skin of mesh " + inQuotes(readName(*file)) + ": " + error.what());
   }
   files.warn(file->mark, warnings);
-  materials.push_back(std::move(skinned));
-  return static_cast<int>(materials.size()) - 1;
+  return materials.add(std::move(skinned));
 }
 
 }  // namespace rise

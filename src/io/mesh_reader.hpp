@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "io/scene_files.hpp"
+#include "io/scene_materials.hpp"
 #include "io/yaml_reader.hpp"
 #include "scene/material.hpp"
 #include "scene/shape.hpp"
@@ -28,7 +29,6 @@ std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4
 // same again, under the name "<material> with <skin>", with the model's skin
 // (findMd2Skin) as its texture, added to `materials` once and shared by every
 // model that wears the same skin.
-int withMd2Skin(const CheckedMap& mesh, int material, std::vector<Material>& materials,
-                SceneFiles& files);
+int withMd2Skin(const CheckedMap& mesh, int material, SceneMaterials& materials, SceneFiles& files);
 
 }  // namespace rise

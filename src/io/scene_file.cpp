@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/text.hpp"
 #include "io/file_limits.hpp"
 #include "io/image_io.hpp"
 #include "io/shape_reader.hpp"
@@ -188,9 +189,9 @@ const std::vector<LightKind>& lightKinds() {
        {"corner", "edge1", "edge2"},
        [](const CheckedMap& light, const Color& color) -> std::unique_ptr<Light> {
          const Vec3 corner = readVec3(light.required("corner"));
-         const Vec3 edge1 = readDirection(light.required("edge1"));
-         return std::make_unique<RectLight>(corner, edge1, readDirection(light.required("edge2")),
-                                            color);
+         const Vec3 edge1 = readNonZeroVector(light.required("edge1"));
+         return std::make_unique<RectLight>(corner, edge1,
+                                            readNonZeroVector(light.required("edge2")), color);
        }},
       {"disk",
        {"center", "normal", "radius"},
@@ -225,7 +226,7 @@ std::unique_ptr<Light> readLight(const Field& item) {
 }
 
 Material readMaterial(const MapEntry& entry, SceneFiles& files) {
-  const std::string name = "material '" + entry.key + "'";
+  const std::string name = "material " + inQuotes(entry.key);
   const CheckedMap map(makeField(entry.value, name, entry.keyMark), name,
                        {"color", "texture", "bump", "normal_map", "ka", "kd", "ks", "ks_texture",
                         "n", "reflection", "transmission", "ior", "roughness"});
@@ -281,9 +282,10 @@ Scene readScene(const YamlNode& root, std::string source) {
   SceneFiles files(std::filesystem::path(scene.source).parent_path());
   if (const std::optional<Field> materials = map.optional("materials"))
     scene.materials = readMaterials(*materials, files);
+  SceneMaterials materials(scene.materials);
   for (const Field& item :
        readList(map.required("objects"), "a list of objects", "an item of 'objects'")) {
-    scene.shapes.push_back(readObject(item, scene.materials, files));
+    scene.shapes.push_back(readObject(item, materials, files));
     scene.shapeNames.push_back(describeObject(item));
   }
   for (const SceneFiles::Warning& warning : files.warnings())
@@ -332,11 +334,8 @@ Scene loadSceneStream(std::istream& in, std::string sourceName) {
 }
 
 Scene loadSceneFile(const std::filesystem::path& path) {
-  // A directory opens as a file stream on POSIX systems and only fails when read.
-  if (std::filesystem::is_directory(path))
-    throw SceneError(path.string(), "cannot open the scene file (" +
-                                        std::make_error_code(std::errc::is_a_directory).message() +
-                                        ")");
+  if (const std::optional<std::string> problem = fileKindOrSizeProblem(path, kLargestSceneFile))
+    throw SceneError(path.string(), *problem);
   errno = 0;
   std::ifstream file(path, std::ios::binary);
   if (!file) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "core/text.hpp"
 #include "io/mapping_reader.hpp"
 #include "io/mesh_reader.hpp"
 #include "scene/shapes/box.hpp"
@@ -29,16 +30,14 @@ namespace {
 // between two edges) before the triangle has no area to hit.
 constexpr float kCollinearSine = 1e-6f;
 
-int readMaterialReference(const Field& field, const std::vector<Material>& materials,
+int readMaterialReference(const Field& field, const SceneMaterials& materials,
                           std::string_view shapeName) {
   const std::string name = readName(field);
-  std::vector<std::string> names;
-  for (const Material& material : materials) names.push_back(material.name);
-  const auto found = std::find(names.begin(), names.end(), name);
-  if (found != names.end()) return static_cast<int>(found - names.begin());
-  const std::string problem = "undefined material '" + name + "' in " + std::string(shapeName);
-  if (names.empty()) failAt(field.mark, problem + "; the scene defines no materials");
-  failAt(field.mark, problem + "; " + suggestAlternative(name, names));
+  if (const std::optional<int> found = materials.find(name)) return *found;
+  const std::string problem =
+      "undefined material " + inQuotes(name) + " in " + std::string(shapeName);
+  if (materials.empty()) failAt(field.mark, problem + "; the scene defines no materials");
+  failAt(field.mark, problem + "; " + suggestAlternative(name, materials.names()));
 }
 
 Vec3 readScale(const Field& field) {
@@ -164,8 +163,7 @@ const std::vector<ShapeKind>& shapeKinds() {
 
 }  // namespace
 
-std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& materials,
-                                  SceneFiles& files) {
+std::unique_ptr<Shape> readObject(const Field& item, SceneMaterials& materials, SceneFiles& files) {
   std::vector<std::string> kindNames;
   for (const ShapeKind& kind : shapeKinds()) kindNames.push_back(kind.name);
   const MapEntry entry = readKindAndProperties(item, "shape", kindNames);

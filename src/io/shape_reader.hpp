@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "io/scene_files.hpp"
+#include "io/scene_materials.hpp"
 #include "io/yaml_reader.hpp"
 #include "scene/material.hpp"
 #include "scene/shape.hpp"
@@ -22,8 +23,7 @@ namespace rise {
 
 // The shape of one item of `objects`. An MD2 model may add the material that
 // wears its skin to `materials` (withMd2Skin).
-std::unique_ptr<Shape> readObject(const Field& item, std::vector<Material>& materials,
-                                  SceneFiles& files);
+std::unique_ptr<Shape> readObject(const Field& item, SceneMaterials& materials, SceneFiles& files);
 
 // The object as a student finds it in the file: its kind and line, "sphere
 // at line 16". For an item that readObject has read.

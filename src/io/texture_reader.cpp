@@ -56,11 +56,9 @@ std::shared_ptr<const Texture> readImageTexture(const CheckedMap& map, const Fie
   std::shared_ptr<const Texture> texture;
   std::vector<std::string> warnings;
   try {
-    texture = std::make_shared<ImageTexture>(
-        std::make_shared<const Image>(readImage(files.path(fileName), encoding, &warnings)),
-        filter);
+    texture = files.imageTexture(files.path(fileName), encoding, filter, warnings);
   } catch (const ImageFileError& error) {
-    failAt(image.mark, "cannot load texture image '" + fileName + "': " + error.what());
+    failAt(image.mark, "cannot load texture image " + inQuotes(fileName) + ": " + error.what());
   }
   files.warn(image.mark, warnings);
   if (transform.isIdentity()) return texture;

@@ -270,20 +270,23 @@ class TreeBuilder {
     auto data = std::make_shared<YamlNode::Data>();
     data->kind = kind;
     data->mark = markOf(event.start_mark);
-    open_.push_back(OpenCollection{data, textOf(anchor), std::nullopt});
+    open_.push_back(OpenCollection{data, textOf(anchor), std::nullopt, values_});
   }
 
   void closeCollection() {
     OpenCollection closed = std::move(open_.back());
     open_.pop_back();
-    add(YamlNode(closed.data), closed.anchor);
+    add(YamlNode(closed.data), closed.anchor, values_ - closed.valuesBefore + 1);
   }
 
   void addScalar(const yaml_event_t& event) {
     countValue(event);
-    add(YamlNode(scalarData(event)), textOf(event.data.scalar.anchor));
+    add(YamlNode(scalarData(event)), textOf(event.data.scalar.anchor), 1);
   }
 
+  // An alias is its anchor's node again, shared, not copied; but whoever
+  // reads the tree reads it again, so its values count again: a few lines
+  // of aliases of aliases would otherwise stand for billions of values.
   void addAlias(const yaml_event_t& event) {
     const std::string name = textOf(event.data.alias.anchor);
     const auto anchored = anchors_.find(name);
@@ -291,7 +294,15 @@ class TreeBuilder {
       throw invalidYaml(markOf(event.start_mark), "unknown alias '*" + name +
                                                       "'; expected the name of an anchor '&" +
                                                       name + "' given to a value before it");
-    add(anchored->second, "");
+    const Anchored repeated = anchored->second;
+    values_ += repeated.values;
+    if (values_ > kMostYamlValues)
+      throw YamlError(markOf(event.start_mark),
+                      "the alias '*" + name + "' repeats " + std::to_string(repeated.values) +
+                          " values, making more than " + std::to_string(kMostYamlValues) +
+                          " in the scene; expected fewer repetitions, or a large mesh in a "
+                          "model file (mesh: {file})");
+    add(repeated.node, "", repeated.values);
   }
 
   std::vector<YamlNode> documents() && { return std::move(documents_); }
@@ -301,6 +312,14 @@ class TreeBuilder {
     std::shared_ptr<YamlNode::Data> data;
     std::string anchor;
     std::optional<YamlNode> pendingKey;
+    std::size_t valuesBefore;  // the values counted before this one
+  };
+
+  // A node an anchor names, and the values it stands for, its own and
+  // those it holds, counted again through every alias.
+  struct Anchored {
+    YamlNode node;
+    std::size_t values;
   };
 
   void countValue(const yaml_event_t& event) {
@@ -311,8 +330,8 @@ class TreeBuilder {
                           "(mesh: {file})");
   }
 
-  void add(YamlNode node, const std::string& anchor) {
-    if (!anchor.empty()) anchors_[anchor] = node;
+  void add(YamlNode node, const std::string& anchor, std::size_t values) {
+    if (!anchor.empty()) anchors_[anchor] = Anchored{node, values};
     if (open_.empty()) {
       documents_.push_back(std::move(node));
       anchors_.clear();
@@ -330,7 +349,7 @@ class TreeBuilder {
   }
 
   std::vector<OpenCollection> open_;
-  std::map<std::string, YamlNode> anchors_;
+  std::map<std::string, Anchored> anchors_;
   std::vector<YamlNode> documents_;
   std::size_t values_ = 0;
 };

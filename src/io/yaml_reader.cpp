@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <unordered_set>
 #include <utility>
 
 #include "core/text.hpp"
@@ -16,15 +17,10 @@ namespace {
 constexpr std::size_t kLongestValueShown = 40;
 constexpr std::size_t kMostKeysListed = 6;
 
-std::string singleQuoted(std::string_view text) {
-  return std::string("'").append(text).append("'");
-}
-
 std::string describeScalar(const YamlNode& node) {
-  std::string text = node.scalar();
-  if (text.size() > kLongestValueShown) text = text.substr(0, kLongestValueShown - 3) + "...";
-  if (node.isQuoted()) return "the string \"" + text + "\"";
-  return node.number() ? text : singleQuoted(text);
+  if (node.isQuoted()) return "the string " + inQuotes(node.scalar(), '"');
+  const std::string& text = node.scalar();
+  return node.number() && text.size() <= kLongestValueShown ? text : inQuotes(text);
 }
 
 std::string describeSequence(const YamlNode& node) {
@@ -146,6 +142,12 @@ std::string suggestAlternative(std::string_view word, const std::vector<std::str
   const std::string* best = nullptr;
   std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
   for (const std::string& candidate : candidates) {
+    // The distance is at least the difference in length: a word too much
+    // longer or shorter is not measured (a name of millions of letters is
+    // no typo, and measuring it would take their square in memory).
+    const std::size_t longer = std::max(word.size(), candidate.size());
+    const std::size_t shorter = std::min(word.size(), candidate.size());
+    if (2 * (longer - shorter) > longer) continue;
     const std::size_t distance = editDistance(lowerWord, lowercase(candidate));
     if (distance < bestDistance) {
       best = &candidate;
@@ -155,7 +157,7 @@ std::string suggestAlternative(std::string_view word, const std::vector<std::str
   // Close enough when at most half the letters of the longer word differ:
   // "radus" is "radius", but "n" is not "ks".
   if (best && 2 * bestDistance <= std::max(word.size(), best->size()))
-    return "did you mean " + singleQuoted(*best) + "?";
+    return "did you mean " + inQuotes(*best) + "?";
   return "expected one of: " + joined(candidates);
 }
 
@@ -189,11 +191,16 @@ Vec3 readVec3(const Field& field) {
   return Vec3(readNumber(coordinates[0]), readNumber(coordinates[1]), readNumber(coordinates[2]));
 }
 
+Vec3 readNonZeroVector(const Field& field) {
+  const Vec3 vector = readVec3(field);
+  if (vector == Vec3(0.0f)) failExpected(field, "a vector that is not zero");
+  return vector;
+}
+
 Vec3 readDirection(const Field& field) {
-  const Vec3 direction = readVec3(field);
-  // Also rejects vectors so short that their length underflows to 0.
-  if (!(glm::length(direction) > 0.0f)) failExpected(field, "a direction, not the zero vector");
-  return direction;
+  const Vec3 vector = readVec3(field);
+  if (vector == Vec3(0.0f)) failExpected(field, "a direction, not the zero vector");
+  return normalizedOrZero(vector);
 }
 
 Color readColor(const Field& field) {
@@ -236,18 +243,19 @@ std::vector<MapEntry> readMap(const Field& field, std::string_view expectation,
                               std::string_view mapName) {
   if (!field.node.isMap()) failExpected(field, expectation);
   std::vector<MapEntry> entries;
+  // Reserved, so that the keys seen stay where they are as entries are added.
+  entries.reserve(field.node.size());
+  std::unordered_set<std::string_view> keys;
   for (const auto& keyAndValue : field.node.entries()) {
     const YamlNode& key = keyAndValue.first;
     if (!key.isScalar())
       failAt(key.mark(),
              "a key in " + std::string(mapName) + " is " + describe(key) + "; expected a name");
-    const bool repeated = std::any_of(entries.begin(), entries.end(), [&](const MapEntry& entry) {
-      return entry.key == key.scalar();
-    });
-    if (repeated)
-      failAt(key.mark(), "duplicate key " + singleQuoted(key.scalar()) + " in " +
-                             std::string(mapName) + "; a key may appear only once");
+    if (keys.contains(key.scalar()))
+      failAt(key.mark(), "duplicate key " + inQuotes(key.scalar()) + " in " + std::string(mapName) +
+                             "; a key may appear only once");
     entries.push_back(MapEntry{key.scalar(), key.mark(), keyAndValue.second});
+    keys.insert(entries.back().key);
   }
   return entries;
 }
@@ -258,21 +266,21 @@ CheckedMap::CheckedMap(const Field& field, std::string name, std::vector<std::st
       entries_(readMap(field, "a map with the keys " + joined(allowedKeys), name_)) {
   for (const MapEntry& entry : entries_) {
     if (std::find(allowedKeys.begin(), allowedKeys.end(), entry.key) == allowedKeys.end())
-      failAt(entry.keyMark, "unknown key " + singleQuoted(entry.key) + " in " + name_ + "; " +
+      failAt(entry.keyMark, "unknown key " + inQuotes(entry.key) + " in " + name_ + "; " +
                                 suggestAlternative(entry.key, allowedKeys));
   }
 }
 
 Field CheckedMap::required(std::string_view key) const {
   std::optional<Field> field = optional(key);
-  if (!field) failAt(mark_, name_ + " is missing " + singleQuoted(key));
+  if (!field) failAt(mark_, name_ + " is missing " + inQuotes(key));
   return *std::move(field);
 }
 
 std::optional<Field> CheckedMap::optional(std::string_view key) const {
   for (const MapEntry& entry : entries_) {
     if (entry.key == key)
-      return makeField(entry.value, singleQuoted(key) + " in " + name_, entry.keyMark);
+      return makeField(entry.value, inQuotes(key) + " in " + name_, entry.keyMark);
   }
   return std::nullopt;
 }
@@ -284,7 +292,7 @@ MapEntry readKindAndProperties(const Field& item, std::string_view kindWord,
   if (!item.node.isMap() || item.node.size() != 1) failExpected(item, expectation);
   const MapEntry entry = readMap(item, expectation, item.name).front();
   if (std::find(kinds.begin(), kinds.end(), entry.key) == kinds.end())
-    failAt(entry.keyMark, "unknown " + std::string(kindWord) + " '" + entry.key + "'; " +
+    failAt(entry.keyMark, "unknown " + std::string(kindWord) + " " + inQuotes(entry.key) + "; " +
                               suggestAlternative(entry.key, kinds));
   return entry;
 }

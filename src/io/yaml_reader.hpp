@@ -63,8 +63,11 @@ enum class Bound { Any, NonNegative, Positive };
 float readNumber(const Field& field, Bound bound = Bound::Any);
 int readWholeNumber(const Field& field, Bound bound = Bound::Any);
 Vec3 readVec3(const Field& field);
-Vec3 readDirection(const Field& field);  // a Vec3 that is not zero
-Color readColor(const Field& field);     // three numbers >= 0
+// A Vec3 that is not zero.
+Vec3 readNonZeroVector(const Field& field);
+// The unit vector along a Vec3 that is not zero, however long or short it is.
+Vec3 readDirection(const Field& field);
+Color readColor(const Field& field);  // three numbers >= 0
 std::string readName(const Field& field);
 float readNonNegative(const Field& field);
 float readPositive(const Field& field);

@@ -12,7 +12,7 @@ ViewFrame::ViewFrame(const Camera& camera, int width, int height)
       lensRadius_(0.5f * camera.aperture),
       focalDistance_(camera.focalDistance > 0.0f ? camera.focalDistance
                                                  : glm::length(camera.lookAt - camera.position)) {
-  forward_ = glm::normalize(camera.lookAt - camera.position);
+  forward_ = normalizedOrZero(camera.lookAt - camera.position);
   // A right-handed world seen from behind the eye: x to the right, y up,
   // looking along forward.
   right_ = glm::normalize(glm::cross(forward_, camera.up));

@@ -66,7 +66,7 @@ class PointLight final : public Light {
 class DirectionalLight final : public Light {
  public:
   DirectionalLight(Vec3 direction, Color color)
-      : Light(color), direction_(glm::normalize(direction)) {}
+      : Light(color), direction_(normalizedOrZero(direction)) {}
 
   LightSample illuminate(const Vec3&, const Vec2&) const override {
     return {-direction_, kInfinity, color()};

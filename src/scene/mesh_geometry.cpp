@@ -77,10 +77,7 @@ MeshGeometry withIdenticalVerticesJoined(const MeshGeometry& geometry) {
 MeshGeometry transformed(MeshGeometry geometry, const Mat4& map) {
   const Mat3 normalMap = glm::transpose(glm::inverse(Mat3(map)));
   for (Vec3& position : geometry.positions) position = Vec3(map * glm::vec4(position, 1.0f));
-  for (Vec3& normal : geometry.normals) {
-    const Vec3 mapped = normalMap * normal;
-    normal = glm::dot(mapped, mapped) > 0.0f ? glm::normalize(mapped) : Vec3(0.0f);
-  }
+  for (Vec3& normal : geometry.normals) normal = normalizedOrZero(normalMap * normal);
   if (glm::determinant(Mat3(map)) < 0.0f)
     for (auto& triangle : geometry.triangles) std::swap(triangle[1], triangle[2]);
   return geometry;
