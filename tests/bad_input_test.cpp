@@ -92,9 +92,9 @@ TEST(BadInputValues, ADirectionOfAnyFiniteLengthIsNormalised) {
 TEST(BadInputYaml, AliasesThatRepeatALargeNodeAreRefusedAtOnce) {
   std::string text = std::string(kCameraAndLight) + "a0: &a0 [1, 2, 3, 4, 5, 6, 7, 8, 9, 10]\n";
   for (int level = 1; level <= 9; ++level) {
-    const std::string previous = "*a" + std::to_string(level - 1);
-    text += "a" + std::to_string(level) + ": &a" + std::to_string(level) + " [";
-    for (int i = 0; i < 10; ++i) text += (i ? ", " : "") + previous;
+    const std::string name = std::to_string(level), previous = std::to_string(level - 1);
+    text.append("a").append(name).append(": &a").append(name).append(" [");
+    for (int i = 0; i < 10; ++i) text.append(i ? ", *a" : "*a").append(previous);
     text += "]\n";
   }
   const auto start = std::chrono::steady_clock::now();
@@ -199,6 +199,60 @@ TEST_F(BadInput, ACommandLineValueOutOfRangeIsToldInTheUsersWords) {
   EXPECT_NE(folder.output.find("<stdin>: standard input is a folder"), std::string::npos)
       << folder.output;
   EXPECT_FALSE(fs::exists(file("x.png")));
+}
+
+TEST_F(BadInput, OutputsThatTheFileSystemRefusesOrThatAreNotFilesAreToldApart) {
+  const std::string scene = example("classic.yaml") + " --width 32 --height 24";
+  const CommandResult tooLong =
+      runRise("render " + scene + " -o " + std::string(300, 'x') + ".png");
+  EXPECT_EQ(tooLong.status, 2);
+  EXPECT_NE(tooLong.output.find("cannot be written (File name too long)"), std::string::npos)
+      << tooLong.output;
+  const CommandResult full =
+      runRise("render " + scene + " -o " + file("a.png").string() + " --stats /dev/full");
+  EXPECT_EQ(full.status, 1);
+  EXPECT_NE(full.output.find("/dev/full: cannot write (No space left on device)"),
+            std::string::npos)
+      << full.output;
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+  const CommandResult standardOutput =
+      runRise("render " + scene + " -o " + file("a.png").string() + " --stats -");
+  EXPECT_EQ(standardOutput.status, 0);
+  EXPECT_NE(standardOutput.output.find("\"algorithm\": \"ray-tracing\""), std::string::npos)
+      << standardOutput.output;
+  EXPECT_FALSE(fs::exists("-"));
+}
+
+// What merge and --video will write is checked before any work, as render
+// checks its outputs: a wrong format or a missing folder is bad input.
+TEST_F(BadInput, MergeAndVideoOutputsAreCheckedBeforeTheWork) {
+  const std::string scene = example("classic.yaml") + " --width 32 --height 24";
+  ASSERT_EQ(runRise("render " + scene + " --tile 0,0,32,24 -o " + file("a.png").string()).status,
+            0);
+  for (const std::string output : {"whole.gif", "missing/whole.png"}) {
+    const CommandResult merged =
+        runRise("merge " + directory_.string() + " -o " + file(output).string());
+    EXPECT_EQ(merged.status, 2) << merged.output;
+  }
+  const CommandResult video = runRise(
+      "render " + example("animation.yaml") + " --width 16 --height 12 --frames 0-1 " + "--video " +
+      file("missing/film.png").string() + " -o " + file("f_%04d.png").string());
+  EXPECT_EQ(video.status, 2);
+  EXPECT_NE(video.output.find("does not exist"), std::string::npos) << video.output;
+  EXPECT_FALSE(fs::exists(file("f_0000.png")));
+}
+
+TEST_F(BadInput, ATileReachingPastTheImageIsToldSo) {
+  const CommandResult result =
+      runRise("render " + example("classic.yaml") +
+              " --width 32 --height 24 --tile 30,20,16,24 -o " + file("t.png").string());
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.output.find("X + W <= 32, Y + H <= 24"), std::string::npos) << result.output;
+  const CommandResult huge = runRise("render " + example("classic.yaml") +
+                                     " --tile 2147483647,0,16,24 -o " + file("t.png").string());
+  EXPECT_EQ(huge.status, 2);
+  EXPECT_NE(huge.output.find("expected a whole number from 0 to 32768"), std::string::npos)
+      << huge.output;
 }
 
 }  // namespace

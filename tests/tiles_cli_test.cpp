@@ -83,7 +83,7 @@ TEST_F(TileCommand, MergeRefusesOverlappingPieces) {
 TEST_F(TileCommand, ATileBeyondTheImageIsBadInput) {
   const CommandResult tile = renderTile("40,0,20,10", "beyond.exr");
   EXPECT_EQ(tile.status, 2);
-  EXPECT_NE(tile.output.find("inside the 50x30 image"), std::string::npos) << tile.output;
+  EXPECT_NE(tile.output.find("within the 50x30 image"), std::string::npos) << tile.output;
   EXPECT_FALSE(fs::exists(file("pieces/beyond.exr")));
 }
 

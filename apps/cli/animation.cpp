@@ -11,6 +11,7 @@
 #include "io/atomic_file.hpp"
 #include "io/image_io.hpp"
 #include "option_checks.hpp"
+#include "output_check.hpp"
 
 namespace rise::cli {
 namespace {
@@ -118,6 +119,10 @@ std::optional<std::string> animationOutputProblem(const fs::path& pattern, const
       (isAnimatedPng(video) || !ffmpegIsInstalled()))
     return "--video " + video.string() + ": an animated PNG is made of PNG frames, not of " +
            pattern.filename().string();
+  if (!video.empty()) {
+    if (std::string problem = outputsProblem({{video, "--video"}}, "-"); !problem.empty())
+      return problem;
+  }
   return std::nullopt;
 }
 

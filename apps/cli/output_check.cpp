@@ -15,9 +15,23 @@ std::filesystem::path resolved(const std::filesystem::path& path) {
 // The nearest folder above `path` that exists.
 std::filesystem::path existingAncestor(const std::filesystem::path& path) {
   std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
-  while (!std::filesystem::exists(folder) && folder.has_relative_path())
+  std::error_code error;
+  while (!std::filesystem::exists(folder, error) && folder.has_relative_path())
     folder = folder.parent_path();
   return folder;
+}
+
+// Why the file system would not take the name at all (longer than it
+// allows, a loop of links), or nothing.
+std::string nameProblem(const std::filesystem::path& path) {
+  std::error_code error;
+  (void)std::filesystem::status(path, error);
+  // A missing file, or a folder on the way that is missing or a file, is
+  // for folderProblem to tell.
+  if (!error || error == std::errc::no_such_file_or_directory ||
+      error == std::errc::not_a_directory)
+    return {};
+  return "cannot be written (" + error.message() + ")";
 }
 
 // "'name'", built by appending: GCC 12 warns falsely on "'" + string.
@@ -46,6 +60,7 @@ std::string outputsProblem(const std::vector<PlannedOutput>& outputs, const std:
   for (std::size_t i = 0; i < outputs.size(); ++i) {
     const PlannedOutput& output = outputs[i];
     const std::string named = output.option + " " + output.path.string() + ": ";
+    if (std::string problem = nameProblem(output.path); !problem.empty()) return named + problem;
     if (std::filesystem::is_directory(output.path))
       return named + "is a folder; expected a file to write";
     if (std::string problem = folderProblem(output.path, foldersAreMade); !problem.empty())

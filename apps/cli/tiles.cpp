@@ -8,6 +8,7 @@
 
 #include "io/image_io.hpp"
 #include "job.hpp"
+#include "option_checks.hpp"
 
 namespace rise::cli {
 namespace {
@@ -154,6 +155,13 @@ struct MergeOptions {
 };
 
 int merge(const MergeOptions& options) {
+  if (!outputsAreWritable({{options.output, "-o"}}, "-")) return kExitBadInput;
+  try {
+    checkImageFormat(options.output);
+  } catch (const ImageFileError& error) {
+    std::cerr << "rise: -o " << error.what() << "\n";
+    return kExitBadInput;
+  }
   Image whole;
   bool linear = false;
   try {
@@ -191,7 +199,8 @@ void addTileOption(CLI::App& command, SettingsOptions& options) {
           "Render only this region, X,Y,W,H, and write its place beside the image (for rise "
           "merge)")
       ->delimiter(',')
-      ->expected(4);
+      ->expected(4)
+      ->check(wholeNumberFrom(0, kLargestImageSide));
 }
 
 fs::path defaultTileOutput(const std::string& scenePath, const PixelRect& region) {

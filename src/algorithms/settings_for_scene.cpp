@@ -55,11 +55,13 @@ RenderSettings settingsFor(const Scene& scene, const RenderRequest& request) {
   if (const std::optional<PixelRect>& region = settings.region;
       region && (region->isEmpty() || region->x0 < 0 || region->y0 < 0 ||
                  region->x1 > settings.width || region->y1 > settings.height))
-    throw SettingsError(
-        "--tile " + std::to_string(region->x0) + "," + std::to_string(region->y0) + "," +
-        std::to_string(region->width()) + "," + std::to_string(region->height()) +
-        ": expected a region of at least one pixel inside the " + std::to_string(settings.width) +
-        "x" + std::to_string(settings.height) + " image");
+    throw SettingsError("--tile " + std::to_string(region->x0) + "," + std::to_string(region->y0) +
+                        "," + std::to_string(region->width()) + "," +
+                        std::to_string(region->height()) +
+                        ": expected a region X,Y,W,H of at least one pixel within the " +
+                        std::to_string(settings.width) + "x" + std::to_string(settings.height) +
+                        " image: W, H >= 1, X + W <= " + std::to_string(settings.width) +
+                        ", Y + H <= " + std::to_string(settings.height));
   settings.threads = resolveThreadCount(settings.threads);
   return settings;
 }

@@ -19,7 +19,9 @@ class OutputFileError : public std::runtime_error {
 
 // A file written under a name unique to this process and call, in the
 // target's own folder, so that the final rename stays on one file system and
-// is atomic. Destroyed without commit(), it deletes itself.
+// is atomic. Destroyed without commit(), or when the process is interrupted
+// (interrupted_writes.hpp), it deletes itself. Standard output ("-") and a
+// target that is not a regular file (a pipe, a device) are written in place.
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path target);
@@ -39,6 +41,7 @@ class AtomicFile {
 
  private:
   std::filesystem::path target_;
+  bool inPlace_;
   std::filesystem::path temporary_;
   std::FILE* file_ = nullptr;
   int error_ = 0;
