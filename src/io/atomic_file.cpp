@@ -44,9 +44,8 @@ std::FILE* openInPlace(const std::filesystem::path& target) {
 
 }  // namespace
 
-AtomicFile::AtomicFile(std::filesystem::path target)
-    : target_(std::move(target)), inPlace_(writtenInPlace(target_)) {
-  if (inPlace_) {
+AtomicFile::AtomicFile(std::filesystem::path target) : target_(std::move(target)) {
+  if (writtenInPlace(target_)) {
     file_ = openInPlace(target_);
   } else {
     temporary_ = uniqueNameBeside(target_);
@@ -58,7 +57,7 @@ AtomicFile::AtomicFile(std::filesystem::path target)
 
 AtomicFile::~AtomicFile() {
   if (file_ != nullptr) std::fclose(file_);
-  if (!inPlace_ && !committed_) {
+  if (!temporary_.empty() && !committed_) {
     forgetTemporary(temporary_);
     std::error_code ignored;
     std::filesystem::remove(temporary_, ignored);
@@ -79,7 +78,7 @@ void AtomicFile::commit() {
   if (std::fclose(file_) != 0 && error_ == 0) error_ = errno;
   file_ = nullptr;
   if (error_ != 0) throw cannotWrite(target_, std::strerror(error_));
-  if (inPlace_) {
+  if (temporary_.empty()) {
     committed_ = true;
     return;
   }

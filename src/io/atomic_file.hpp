@@ -41,8 +41,7 @@ class AtomicFile {
 
  private:
   std::filesystem::path target_;
-  bool inPlace_;
-  std::filesystem::path temporary_;
+  std::filesystem::path temporary_;  // empty for a target written in place
   std::FILE* file_ = nullptr;
   int error_ = 0;
   bool committed_ = false;

@@ -63,7 +63,12 @@ using AssimpScene = std::unique_ptr<const aiScene, SceneRelease>;
 // return on a corrupt file (MD5, ASE, OpenGEX, SMD).
 const std::vector<std::string> kModelFormats = {".obj", ".ply", ".md2", ".gltf",
                                                 ".glb", ".off", ".3ds", ".stl"};
-const std::string kFormatExamples = ".obj, .ply, .md2, .gltf, .glb, .off, .3ds or .stl";
+
+// ".obj, .ply, ... or .stl".
+std::string formatsRead() {
+  const std::vector<std::string> allButLast(kModelFormats.begin(), kModelFormats.end() - 1);
+  return joined(allButLast) + " or " + kModelFormats.back();
+}
 
 // The file must exist, be a regular file within the size RISE reads, open,
 // and hold something.
@@ -101,11 +106,11 @@ void checkFormatIsSupported(const std::filesystem::path& path) {
   const std::string extension = path.extension().string();
   if (extension.empty())
     throw MeshFileError("the file name has no extension to tell its format; expected " +
-                        kFormatExamples);
+                        formatsRead());
   if (std::find(kModelFormats.begin(), kModelFormats.end(), lowercase(extension)) ==
       kModelFormats.end())
     throw MeshFileError(inQuotes(extension) + " is not a model format that RISE reads; expected " +
-                        kFormatExamples);
+                        formatsRead());
 }
 
 // The header checks of the formats whose headers promise counts: Assimp
