@@ -14,6 +14,7 @@
 
 #include "io/scene_file.hpp"
 #include "scene/light.hpp"
+#include "support/image_agreement_testing.hpp"
 #include "support/rise_command_testing.hpp"
 
 namespace rise {
@@ -253,6 +254,30 @@ TEST_F(BadInput, ATileReachingPastTheImageIsToldSo) {
   EXPECT_EQ(huge.status, 2);
   EXPECT_NE(huge.output.find("expected a whole number from 0 to 32768"), std::string::npos)
       << huge.output;
+}
+
+// "frames: [5, 5]" moves from a keyframe to itself: the model stands in it,
+// as with "frame: 5", for every algorithm (it crashed every one).
+TEST_F(BadInput, AnMd2MovingFromAKeyframeToItselfStandsInIt) {
+  const std::string model = std::string(RISE_SOURCE_DIR) + "/examples/models/sydney/sydney.md2";
+  const auto sceneIn = [&](const std::string& posing) {
+    return loadScene(
+        "camera: {position: [0, 0, -120], look_at: [0, 0, 0], shutter: [0, 1]}\n"
+        "lights: [{point: {position: [0, 50, -100]}}]\n"
+        "materials: {m: {}}\nobjects: [{mesh: {file: " +
+            model + ", material: m, " + posing + "}}]\n",
+        "s.yaml");
+  };
+  const Scene still = sceneIn("frame: 5"), moving = sceneIn("frames: [5, 5]");
+  RenderSettings settings;
+  settings.width = 40;
+  settings.height = 30;
+  settings.sampling.samples = 2;
+  for (const std::string_view algorithm : {"ray-tracing", "z-buffer", "hybrid"}) {
+    const Image expected = image_agreement_testing::renderWith(algorithm, still, settings).image;
+    const Image drawn = image_agreement_testing::renderWith(algorithm, moving, settings).image;
+    EXPECT_EQ(drawn.pixels(), expected.pixels()) << algorithm;
+  }
 }
 
 }  // namespace

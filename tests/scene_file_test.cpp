@@ -353,7 +353,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "mismatched_bracket.yaml:4:30: invalid YAML: unexpected '}'; check that the "
                  "brackets before it are closed in order"},
         BadScene{"tab_indentation.yaml",
-                 "tab_indentation.yaml:3:10: invalid YAML: unexpected ':' (wrong indentation, a "
+                 "tab_indentation.yaml:3:17: invalid YAML: unexpected ':' (wrong indentation, a "
                  "tab, or a value with ': ' that needs quotes?)"},
         BadScene{"leading_comma.yaml",
                  "leading_comma.yaml:2:1: invalid YAML: unexpected ','; expected a value (quote "

@@ -5,28 +5,11 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "io/text_position.hpp"
 #include "studio.hpp"
 
 namespace rise::studio {
 namespace {
-
-// The 0-based offset of a 1-based line and column in the text.
-int offsetOf(const std::string& text, int line, int column) {
-  std::size_t offset = 0;
-  for (int l = 1; l < line && offset != std::string::npos; ++l) {
-    offset = text.find('\n', offset);
-    if (offset != std::string::npos) ++offset;
-  }
-  if (offset == std::string::npos) return static_cast<int>(text.size());
-  return static_cast<int>(
-      std::min(text.size(), offset + static_cast<std::size_t>(std::max(column - 1, 0))));
-}
-
-std::string lineOf(const std::string& text, int line) {
-  const auto begin = static_cast<std::size_t>(offsetOf(text, line, 1));
-  const std::size_t end = text.find('\n', begin);
-  return text.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
-}
 
 int moveCursor(ImGuiInputTextCallbackData* data) {
   int& pending = *static_cast<int*>(data->UserData);
@@ -84,12 +67,13 @@ void Studio::drawTextPanel() {
     if (problem.line > 0) {
       // The line, and a caret under the column, as a compiler shows them.
       const std::string number = std::to_string(problem.line);
-      ImGui::Text("%s | %s", number.c_str(), lineOf(text_, problem.line).c_str());
+      ImGui::Text("%s | %s", number.c_str(), lineShown(text_, problem.line - 1).c_str());
       ImGui::Text(
           "%s | %s^", std::string(number.size(), ' ').c_str(),
           std::string(static_cast<std::size_t>(std::max(problem.column - 1, 0)), ' ').c_str());
       if (ImGui::SmallButton("Go to the error"))
-        pendingCursor_ = offsetOf(text_, problem.line, problem.column);
+        pendingCursor_ =
+            static_cast<int>(offsetOfShown(text_, {problem.line - 1, problem.column - 1}));
     }
   }
   ImGui::End();

@@ -99,7 +99,8 @@ std::unique_ptr<Shape> readMeshFile(const CheckedMap& mesh, const Field& file, i
   try {
     if (!keyframes.empty())
       checkKeyframesExist(keyframeFields, keyframes, md2KeyframeCount(path), fileName);
-    if (keyframes.size() == 2) {
+    // From a keyframe to itself is to stand still in it.
+    if (keyframes.size() == 2 && keyframes[0] != keyframes[1]) {
       std::vector<MeshGeometry> poses = loadMd2Keyframes(path, keyframes[0], keyframes[1]);
       mapAndPlace(mesh, poses, worldFromObject);
       return std::make_unique<KeyframedMesh>(std::move(poses), material);

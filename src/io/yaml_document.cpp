@@ -96,40 +96,8 @@ Mark YamlNode::mark() const { return data_ ? data_->mark : Mark{}; }
 
 namespace {
 
-Mark markOf(const yaml_mark_t& mark) {
+Mark characterMarkOf(const yaml_mark_t& mark) {
   return Mark{static_cast<int>(mark.line), static_cast<int>(mark.column)};
-}
-
-bool isUtf8Continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
-
-// The byte of the text at a mark: libyaml counts columns in characters.
-std::optional<std::size_t> offsetOf(std::string_view text, Mark mark) {
-  std::size_t offset = 0;
-  for (int line = 0; line < mark.line; ++line) {
-    offset = text.find('\n', offset);
-    if (offset == std::string_view::npos) return std::nullopt;
-    ++offset;
-  }
-  for (int column = 0; column < mark.column; ++column) {
-    if (offset >= text.size() || text[offset] == '\n') return std::nullopt;
-    ++offset;
-    while (offset < text.size() && isUtf8Continuation(text[offset])) ++offset;
-  }
-  if (offset >= text.size()) return std::nullopt;
-  return offset;
-}
-
-Mark markAtOffset(std::string_view text, std::size_t offset) {
-  Mark mark;
-  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++mark.line;
-      mark.column = 0;
-    } else if (!isUtf8Continuation(text[i])) {
-      ++mark.column;
-    }
-  }
-  return mark;
 }
 
 YamlError invalidYaml(Mark mark, const std::string& problem) {
@@ -138,18 +106,25 @@ YamlError invalidYaml(Mark mark, const std::string& problem) {
 
 std::string quotedCharacter(char c) { return std::string("'") + c + "'"; }
 
+Mark shownMark(std::string_view text, Mark characters) {
+  return ShownMarks(text).shown(characters);
+}
+
+Mark shownMarkAt(std::string_view text, std::size_t offset) {
+  return shownMark(text, characterMarkAt(text, offset));
+}
+
 // A tab where libyaml wants indentation: YAML indents with spaces only. Said
 // at the line's ':' when it has one, where a reader of the line looks.
 YamlError tabError(std::string_view text, std::size_t tab, Mark where) {
-  const std::size_t lineStart =
-      text.rfind('\n', tab) == std::string_view::npos ? 0 : text.rfind('\n', tab) + 1;
+  std::size_t lineStart = tab;
+  while (lineStart > 0 && lineBreakAt(text, lineStart - 1) == 0) --lineStart;
   const bool inIndentation =
       text.substr(lineStart, tab - lineStart).find_first_not_of(" \t") == std::string_view::npos;
-  const std::size_t lineEnd = std::min(text.find('\n', tab), text.size());
-  for (std::size_t i = tab; inIndentation && i < lineEnd; ++i) {
-    if (text[i] == ':' && (i + 1 == lineEnd || text[i + 1] == ' ' || text[i + 1] == '\r'))
+  for (std::size_t i = tab; inIndentation && i < text.size() && lineBreakAt(text, i) == 0; ++i) {
+    if (text[i] == ':' && (i + 1 == text.size() || text[i + 1] == ' ' || lineBreakAt(text, i + 1)))
       return invalidYaml(
-          markAtOffset(text, i),
+          shownMarkAt(text, i),
           "unexpected ':' (wrong indentation, a tab, or a value with ': ' that needs quotes?)");
   }
   return invalidYaml(where, "a tab in the indentation; YAML indents with spaces");
@@ -167,14 +142,16 @@ std::string unclosedBracket(std::optional<char> found, char opening, char closin
 // libyaml's complaint, said as what is wrong with the scene text.
 YamlError syntaxError(const yaml_parser_t& parser, std::string_view text) {
   if (parser.error == YAML_READER_ERROR)
-    return invalidYaml(markAtOffset(text, parser.problem_offset),
+    return invalidYaml(shownMarkAt(text, parser.problem_offset),
                        std::string("the text is not readable: ") + parser.problem);
-  const Mark where = markOf(parser.problem_mark);
-  const std::optional<std::size_t> offset = offsetOf(text, where);
+  const Mark problemCharacter = characterMarkOf(parser.problem_mark);
+  const Mark where = shownMark(text, problemCharacter);
+  const Mark context = shownMark(text, characterMarkOf(parser.context_mark));
+  const std::optional<std::size_t> offset = offsetOfCharacter(text, problemCharacter);
   const std::optional<char> found =
       offset ? std::optional<char>(text[*offset]) : std::optional<char>();
   const std::string problem = parser.problem ? parser.problem : "unknown problem";
-  const std::string context = parser.context ? parser.context : "";
+  const std::string contextText = parser.context ? parser.context : "";
   if (problem == "did not find expected ',' or ']'")
     return invalidYaml(where, unclosedBracket(found, '[', ']'));
   if (problem == "did not find expected ',' or '}'")
@@ -193,15 +170,15 @@ YamlError syntaxError(const yaml_parser_t& parser, std::string_view text) {
                                     : "the text ends where a value was expected");
   if (problem == "did not find expected key")
     return invalidYaml(where, "expected a key of the map begun on line " +
-                                  std::to_string(parser.context_mark.line + 1) +
+                                  std::to_string(context.line + 1) +
                                   " at its indentation (wrong indentation?)");
   if (problem == "could not find expected ':'")
-    return invalidYaml(markOf(parser.context_mark),
+    return invalidYaml(context,
                        "expected 'key: value' on this line; a value on a line of its own "
                        "is indented under its key");
-  if (context == "while scanning a quoted scalar")
-    return invalidYaml(markOf(parser.context_mark), "a quoted text is not closed");
-  return invalidYaml(where, context.empty() ? problem : problem + " (" + context + ")");
+  if (contextText == "while scanning a quoted scalar")
+    return invalidYaml(context, "a quoted text is not closed");
+  return invalidYaml(where, contextText.empty() ? problem : problem + " (" + contextText + ")");
 }
 
 class Parser {
@@ -245,10 +222,10 @@ bool isNullWord(std::string_view text) {
   return text.empty() || text == "~" || text == "null" || text == "Null" || text == "NULL";
 }
 
-std::shared_ptr<YamlNode::Data> scalarData(const yaml_event_t& event) {
+std::shared_ptr<YamlNode::Data> scalarData(const yaml_event_t& event, Mark mark) {
   auto data = std::make_shared<YamlNode::Data>();
   const auto& scalar = event.data.scalar;
-  data->mark = markOf(event.start_mark);
+  data->mark = mark;
   data->scalar.assign(reinterpret_cast<const char*>(scalar.value), scalar.length);
   const std::string tag = textOf(scalar.tag);
   data->quoted = scalar.style != YAML_PLAIN_SCALAR_STYLE || tag == "!" || tag == YAML_STR_TAG;
@@ -261,15 +238,17 @@ std::shared_ptr<YamlNode::Data> scalarData(const yaml_event_t& event) {
 // on a stack.
 class TreeBuilder {
  public:
+  explicit TreeBuilder(std::string_view text) : marks_(text) {}
+
   void openCollection(YamlNode::Kind kind, const yaml_event_t& event, const yaml_char_t* anchor) {
     countValue(event);
     if (open_.size() >= static_cast<std::size_t>(kDeepestYamlNesting))
-      throw YamlError(markOf(event.start_mark), "lists and maps nested more than " +
-                                                    std::to_string(kDeepestYamlNesting) +
-                                                    " deep; a scene needs only a few levels");
+      throw YamlError(markOf(event), "lists and maps nested more than " +
+                                         std::to_string(kDeepestYamlNesting) +
+                                         " deep; a scene needs only a few levels");
     auto data = std::make_shared<YamlNode::Data>();
     data->kind = kind;
-    data->mark = markOf(event.start_mark);
+    data->mark = markOf(event);
     open_.push_back(OpenCollection{data, textOf(anchor), std::nullopt, values_});
   }
 
@@ -281,7 +260,7 @@ class TreeBuilder {
 
   void addScalar(const yaml_event_t& event) {
     countValue(event);
-    add(YamlNode(scalarData(event)), textOf(event.data.scalar.anchor), 1);
+    add(YamlNode(scalarData(event, markOf(event))), textOf(event.data.scalar.anchor), 1);
   }
 
   // An alias is its anchor's node again, shared, not copied; but whoever
@@ -291,13 +270,13 @@ class TreeBuilder {
     const std::string name = textOf(event.data.alias.anchor);
     const auto anchored = anchors_.find(name);
     if (anchored == anchors_.end())
-      throw invalidYaml(markOf(event.start_mark), "unknown alias '*" + name +
-                                                      "'; expected the name of an anchor '&" +
-                                                      name + "' given to a value before it");
+      throw invalidYaml(markOf(event), "unknown alias '*" + name +
+                                           "'; expected the name of an anchor '&" + name +
+                                           "' given to a value before it");
     const Anchored repeated = anchored->second;
     values_ += repeated.values;
     if (values_ > kMostYamlValues)
-      throw YamlError(markOf(event.start_mark),
+      throw YamlError(markOf(event),
                       "the alias '*" + name + "' repeats " + std::to_string(repeated.values) +
                           " values, making more than " + std::to_string(kMostYamlValues) +
                           " in the scene; expected fewer repetitions, or a large mesh in a "
@@ -322,9 +301,11 @@ class TreeBuilder {
     std::size_t values;
   };
 
+  Mark markOf(const yaml_event_t& event) { return marks_.shown(characterMarkOf(event.start_mark)); }
+
   void countValue(const yaml_event_t& event) {
     if (++values_ > kMostYamlValues)
-      throw YamlError(markOf(event.start_mark),
+      throw YamlError(markOf(event),
                       "more than " + std::to_string(kMostYamlValues) +
                           " values in the scene; expected a larger mesh in a model file "
                           "(mesh: {file})");
@@ -348,6 +329,7 @@ class TreeBuilder {
     }
   }
 
+  ShownMarks marks_;
   std::vector<OpenCollection> open_;
   std::map<std::string, Anchored> anchors_;
   std::vector<YamlNode> documents_;
@@ -358,7 +340,7 @@ class TreeBuilder {
 
 std::vector<YamlNode> parseYamlDocuments(std::string_view text) {
   Parser parser(text);
-  TreeBuilder builder;
+  TreeBuilder builder(text);
   for (;;) {
     const Event next(parser);
     const yaml_event_t& event = next.get();

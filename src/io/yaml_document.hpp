@@ -15,13 +15,9 @@
 #include <utility>
 #include <vector>
 
-namespace rise {
+#include "io/text_position.hpp"
 
-// A place in the text, counted from 0 (messages add 1).
-struct Mark {
-  int line = 0;
-  int column = 0;
-};
+namespace rise {
 
 // Lists and maps nested deeper than this are refused: a scene needs a handful
 // of levels, and the limit keeps every walk over the tree shallow.

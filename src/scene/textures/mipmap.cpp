@@ -88,6 +88,11 @@ Color MipMap::ellipticalAverageAt(const Vec2& uv, const PixelFootprint& footprin
     ellipse.yy += widen * across.y * across.y;
   }
   const float level = levelFor(std::sqrt(std::max(shorter, widest)));
+  // Wider than the whole texture, which repeats: the average of it all, the
+  // one texel of the top level, without summing the periods the footprint
+  // spans (millions, for a texture repeated a thousand times).
+  if (!std::isfinite(longer) || level >= static_cast<float>(levels_.size() - 1))
+    return levels_.back().at(0, 0);
   const auto finer = static_cast<int>(std::floor(level));
   const int coarser = std::min(finer + 1, static_cast<int>(levels_.size()) - 1);
   const Color atFiner = ellipticalAverageOn(finer, uv, ellipse);

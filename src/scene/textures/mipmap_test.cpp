@@ -70,5 +70,17 @@ TEST(MipMap, TheEllipticalAverageStaysBoundedOnAVeryLongFootprint) {
   EXPECT_LE(average.r, 1.0f);
 }
 
+// A footprint that spans the repeated texture a million times over, as a
+// texture scaled by 1000 seen at a grazing angle: the mean of the whole
+// texture, and at once (summing every period took minutes a pixel).
+TEST(MipMap, AFootprintWiderThanTheTextureReadsItsMean) {
+  const MipMap mipmap(bandAndColumns());
+  const Color mean(4.0f / 32.0f, 0.2f, 0.5f);
+  for (const PixelFootprint& wide :
+       {footprint({1e6f, 0.0f}, {0.0f, 1e6f}), footprint({1e7f, 3e6f}, {-2e5f, 4e6f}),
+        footprint({INFINITY, 0.0f}, {0.0f, 1.0f})})
+    EXPECT_TRUE(nearlyEqual(mipmap.ellipticalAverageAt({0.3f, 0.6f}, wide), mean, 1e-3f));
+}
+
 }  // namespace
 }  // namespace rise
