@@ -256,6 +256,31 @@ TEST_F(BadInput, ATileReachingPastTheImageIsToldSo) {
       << huge.output;
 }
 
+// Two outputs of one command that are one file, by a link or as a tile's
+// place beside its image, are refused before the render, which writes none.
+TEST_F(BadInput, TwoNamesOfOneFileAreRefusedBeforeTheRender) {
+  const std::string scene = example("classic.yaml") + " --width 32 --height 24";
+  write("a.png", "");
+  fs::create_hard_link(file("a.png"), file("stats.json"));
+  const CommandResult linked = runRise("render " + scene + " -o " + file("a.png").string() +
+                                       " --stats " + file("stats.json").string());
+  EXPECT_EQ(linked.status, 2);
+  EXPECT_NE(
+      linked.output.find("--stats " + file("stats.json").string() + ": is the file -o names too"),
+      std::string::npos)
+      << linked.output;
+  EXPECT_EQ(fs::file_size(file("a.png")), 0u);
+  const CommandResult place =
+      runRise("render " + scene + " --tile 0,0,16,24 -o " + file("t.exr").string() + " --stats " +
+              file("t.exr.tile.json").string());
+  EXPECT_EQ(place.status, 2);
+  EXPECT_NE(place.output.find("--tile's place " + file("t.exr.tile.json").string() +
+                              ": is the file --stats names too"),
+            std::string::npos)
+      << place.output;
+  EXPECT_FALSE(fs::exists(file("t.exr")));
+}
+
 // "frames: [5, 5]" moves from a keyframe to itself: the model stands in it,
 // as with "frame: 5", for every algorithm (it crashed every one).
 TEST_F(BadInput, AnMd2MovingFromAKeyframeToItselfStandsInIt) {

@@ -1,7 +1,6 @@
 // Every class of bad input that once crashed RISE, hung it or let it take all
-// the memory, given to the `rise` binary as a user would give it, under an
-// address-space limit and a time limit: it must exit with status 2 (1 for a
-// write that fails), say what is wrong, write nothing, and do so at once.
+// the memory, given to the `rise` binary as a user would give it
+// (support/bad_input_testing.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "support/bad_input_testing.hpp"
 #include "support/png_header_testing.hpp"
 #include "support/rise_process_testing.hpp"
 #include "support/temporary_folder_testing.hpp"
@@ -20,36 +20,15 @@ namespace rise {
 namespace {
 
 namespace fs = std::filesystem;
+using bad_input_testing::BadInput;
+using bad_input_testing::expectRefusedAtOnce;
+using bad_input_testing::nameOf;
 using process_testing::Limits;
 using process_testing::Outcome;
 using process_testing::runRise;
 
-// A sanitized build reserves terabytes of shadow address space and runs
-// several times slower: it gets no address-space limit and more time.
-#ifdef RISE_SANITIZED_BUILD
-constexpr std::uint64_t kAddressSpace = 0;
-constexpr double kSeconds = 60.0;
-#else
-constexpr std::uint64_t kAddressSpace = 512'000'000;
-constexpr double kSeconds = 5.0;
-#endif
-
 const fs::path kExamples = fs::path(RISE_SOURCE_DIR) / "examples";
 const std::string kCamera = "camera: {position: [0, 0, -5], look_at: [0, 0, 0]}\n";
-
-struct BadInput {
-  std::string name;
-  // The files of the case, written into its folder: name and contents.
-  std::vector<std::pair<std::string, std::string>> files;
-  std::vector<std::string> arguments;  // "DIR/" is replaced by the case's folder
-  std::string standardInput = "/dev/null";
-  int status = 2;
-  std::string message;                 // a part of what rise says
-  std::uint64_t fileSizeBytes = 0;     // the largest file it may write: a full disk
-  std::vector<std::string> written{};  // the files it may leave, whole
-};
-
-void PrintTo(const BadInput& input, std::ostream* out) { *out << input.name; }
 
 std::string withObject(const std::string& object) {
   return kCamera + "materials: {m: {}}\nobjects:\n  - " + object + "\n";
@@ -337,37 +316,10 @@ class BadInputUnderLimits : public TemporaryFolderTest,
                             public ::testing::WithParamInterface<BadInput> {};
 
 TEST_P(BadInputUnderLimits, IsRefusedAtOnceWithItsMessageAndNoOutput) {
-  const BadInput& input = GetParam();
-  for (const auto& [name, contents] : input.files)
-    std::ofstream(directory_ / name, std::ios::binary) << contents;
-  std::vector<std::string> arguments = input.arguments;
-  for (std::string& argument : arguments)
-    if (argument.starts_with("DIR/")) argument = (directory_ / argument.substr(4)).string();
-  Limits limits;
-  limits.addressSpaceBytes = kAddressSpace;
-  limits.seconds = kSeconds;
-  limits.standardInput = input.standardInput;
-  limits.fileSizeBytes = input.fileSizeBytes;
-
-  const Outcome outcome = runRise(arguments, limits);
-  EXPECT_FALSE(outcome.timedOut) << "still running after " << kSeconds << " s";
-  EXPECT_EQ(outcome.status, input.status) << outcome.output;
-  EXPECT_NE(outcome.output.find(input.message), std::string::npos) << outcome.output;
-  EXPECT_EQ(outcome.output.find("terminate called"), std::string::npos) << outcome.output;
-  for (const fs::directory_entry& entry : fs::directory_iterator(directory_)) {
-    const std::string name = entry.path().filename().string();
-    const bool given = std::any_of(input.files.begin(), input.files.end(),
-                                   [&](const auto& file) { return file.first == name; });
-    const bool allowed =
-        std::find(input.written.begin(), input.written.end(), name) != input.written.end();
-    EXPECT_TRUE(given || allowed) << name << " was written";
-  }
+  expectRefusedAtOnce(GetParam(), directory_);
 }
 
-INSTANTIATE_TEST_SUITE_P(Resources, BadInputUnderLimits, ::testing::ValuesIn(badInputs()),
-                         [](const ::testing::TestParamInfo<BadInput>& info) {
-                           return info.param.name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Resources, BadInputUnderLimits, ::testing::ValuesIn(badInputs()), nameOf);
 
 // Checking a model's header reads the file, not as much as the largest file
 // RISE would take (128 MB): the report's MD2 scene loads in 172 MB of address

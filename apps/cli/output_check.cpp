@@ -12,6 +12,14 @@ std::filesystem::path resolved(const std::filesystem::path& path) {
   return error ? std::filesystem::absolute(path).lexically_normal() : canonical;
 }
 
+// Whether two names are one file: the same path once links are followed,
+// or, for files that exist, the same file by other names (hard links).
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b) {
+  if (resolved(a) == resolved(b)) return true;
+  std::error_code error;
+  return std::filesystem::equivalent(a, b, error) && !error;
+}
+
 // The nearest folder above `path` that exists.
 std::filesystem::path existingAncestor(const std::filesystem::path& path) {
   std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
@@ -65,10 +73,10 @@ std::string outputsProblem(const std::vector<PlannedOutput>& outputs, const std:
       return named + "is a folder; expected a file to write";
     if (std::string problem = folderProblem(output.path, foldersAreMade); !problem.empty())
       return named + problem;
-    if (sceneIsFile && resolved(output.path) == resolved(scenePath))
+    if (sceneIsFile && sameFile(output.path, scenePath))
       return named + "is the scene file; RISE never writes over its input";
     for (std::size_t j = 0; j < i; ++j) {
-      if (resolved(outputs[j].path) == resolved(output.path))
+      if (sameFile(outputs[j].path, output.path))
         return named + "is the file " + outputs[j].option + " names too; expected another name";
     }
   }

@@ -8,6 +8,7 @@
 #include "io/scene_error.hpp"
 #include "job.hpp"
 #include "render/buffer_images.hpp"
+#include "tiles.hpp"
 
 namespace rise::cli {
 namespace {
@@ -82,6 +83,7 @@ bool renderOutputsAreValid(const RenderOutputOptions& options, const SettingsOpt
   for (const std::string& name : options.buffers)
     outputs.push_back({bufferPath(image, name), "--aov " + name});
   if (!options.statsPath.empty()) outputs.push_back({options.statsPath, "--stats"});
+  if (settings.request.settings.region) outputs.push_back({tilePlacePath(image), "--tile's place"});
   return outputsAreWritable(outputs, settings.scenePath);
 }
 

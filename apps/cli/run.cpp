@@ -42,8 +42,10 @@ int render(const RenderOptions& options, const CLI::App& command) {
   const AlgorithmDescription& algorithm = renderer.description();
   if (!drawsShadowsAsked(algorithm, options.settings.request.settings.shadows))
     return kExitBadInput;
-  const std::filesystem::path output =
-      options.output.empty() ? defaultOutput(options.settings.scenePath, ".png") : options.output;
+  const std::optional<PixelRect>& tile = options.settings.request.settings.region;
+  const std::filesystem::path output = !options.output.empty() ? options.output
+                                       : tile ? defaultTileOutput(options.settings.scenePath, *tile)
+                                              : defaultOutput(options.settings.scenePath, ".png");
   if (!renderOutputsAreValid(options.outputs, options.settings, algorithm, output))
     return kExitBadInput;
 
@@ -53,7 +55,6 @@ int render(const RenderOptions& options, const CLI::App& command) {
   job.settings.buffers = options.outputs.buffers;  // those --aov writes, and no others
   noteUnreadOptions(command, algorithm);
 
-  const std::optional<PixelRect>& tile = job.settings.region;
   const FrameWriter write = [&](const RenderResult& result, const std::filesystem::path& file) {
     const RenderDescription description = describe(job, renderer.name());
     try {
@@ -74,9 +75,7 @@ int render(const RenderOptions& options, const CLI::App& command) {
   }
   const std::optional<RenderResult> rendered = renderWithProgress(renderer, job);
   if (!rendered) return kExitBadInput;
-  return write(*rendered, !options.output.empty() ? options.output
-                          : tile ? defaultTileOutput(options.settings.scenePath, *tile)
-                                 : output);
+  return write(*rendered, output);
 }
 
 int compare(const CompareOptions& options) {

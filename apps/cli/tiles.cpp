@@ -5,7 +5,11 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
+#include "core/memory_budget.hpp"
+#include "io/atomic_file.hpp"
+#include "io/file_limits.hpp"
 #include "io/image_io.hpp"
 #include "job.hpp"
 #include "option_checks.hpp"
@@ -36,16 +40,31 @@ std::string describe(const PixelRect& area) {
          std::to_string(area.width()) + "," + std::to_string(area.height());
 }
 
+// A whole number of the place's JSON, from `least` to the largest image side.
+int placeNumber(const nlohmann::json& json, const char* key, int least, const fs::path& place) {
+  const nlohmann::json& value = json.at(key);
+  if (!value.is_number_integer() || value.get<std::int64_t>() < least ||
+      value.get<std::int64_t>() > kLargestImageSide)
+    throw MergeError(place.string() + ": '" + key + "' is " + value.dump() +
+                     "; expected a whole number of pixels from " + std::to_string(least) + " to " +
+                     std::to_string(kLargestImageSide));
+  return value.get<int>();
+}
+
 Piece readPiece(const fs::path& place) {
+  if (const std::optional<std::string> problem = fileKindOrSizeProblem(place, kLargestSceneFile))
+    throw MergeError(place.string() + ": " + *problem);
   std::ifstream file(place);
   try {
     const nlohmann::json json = nlohmann::json::parse(file);
-    const int x = json.at("x"), y = json.at("y");
+    const auto number = [&](const char* key, int least) {
+      return placeNumber(json, key, least, place);
+    };
+    const int x = number("x", 0), y = number("y", 0);
     Piece piece{place, place.parent_path() / json.at("image").get<std::string>(),
-                PixelRect{x, y, x + json.at("width").get<int>(), y + json.at("height").get<int>()},
-                json.at("image_width"), json.at("image_height")};
-    if (piece.area.isEmpty() || x < 0 || y < 0 || piece.area.x1 > piece.imageWidth ||
-        piece.area.y1 > piece.imageHeight)
+                PixelRect{x, y, x + number("width", 1), y + number("height", 1)},
+                number("image_width", 1), number("image_height", 1)};
+    if (piece.area.x1 > piece.imageWidth || piece.area.y1 > piece.imageHeight)
       throw MergeError(place.string() + ": the region " + describe(piece.area) +
                        " does not lie inside the " + std::to_string(piece.imageWidth) + "x" +
                        std::to_string(piece.imageHeight) + " image");
@@ -104,6 +123,11 @@ std::vector<PixelRect> gaps(const std::vector<Piece>& pieces, int width, int hei
 
 void checkPieces(const std::vector<Piece>& pieces) {
   const Piece& first = pieces.front();
+  if (const std::optional<std::string> problem = memoryProblem(
+          static_cast<std::uint64_t>(first.imageWidth) * first.imageHeight * sizeof(Color),
+          "the " + std::to_string(first.imageWidth) + "x" + std::to_string(first.imageHeight) +
+              " image the pieces make"))
+    throw MergeError(first.place.string() + ": " + *problem);
   for (const Piece& piece : pieces)
     if (piece.imageWidth != first.imageWidth || piece.imageHeight != first.imageHeight)
       throw MergeError(piece.place.string() + ": a piece of a " + std::to_string(piece.imageWidth) +
@@ -131,7 +155,7 @@ bool holdsLinearValues(const fs::path& image) { return image.extension() == ".ex
 // formats' levels read and written raw, so that they do not change either.
 Image joined(const std::vector<Piece>& pieces) {
   const bool linear = holdsLinearValues(pieces.front().image);
-  Image whole(pieces.front().imageWidth, pieces.front().imageHeight);
+  Image whole;  // taken once a piece is found to be what its place says
   for (const Piece& piece : pieces) {
     if (holdsLinearValues(piece.image) != linear)
       throw MergeError(piece.image.string() + ": expected " +
@@ -143,6 +167,7 @@ Image joined(const std::vector<Piece>& pieces) {
                        std::to_string(image.height()) + " pixels, but " + piece.place.string() +
                        " places a " + std::to_string(piece.area.width()) + "x" +
                        std::to_string(piece.area.height()) + " region");
+    if (whole.width() == 0) whole = Image(piece.imageWidth, piece.imageHeight);
     paste(image, piece.area, whole);
   }
   return whole;
@@ -230,17 +255,7 @@ void writeTilePlace(const fs::path& image, const RenderSettings& settings, const
                                 {"scene", scene},
                                 {"algorithm", algorithm},
                                 {"seed", settings.seed}};
-  const fs::path path = tilePlacePath(image);
-  const fs::path temporary = path.string() + ".part";
-  {
-    std::ofstream file(temporary);
-    file << place.dump(2) << "\n";
-    if (!file.flush()) {
-      fs::remove(temporary);
-      throw std::runtime_error(path.string() + ": cannot write");
-    }
-  }
-  fs::rename(temporary, path);
+  writeFileAtomically(tilePlacePath(image), place.dump(2) + "\n");
 }
 
 std::function<std::optional<int>()> addMergeCommand(CLI::App& app) {

@@ -30,6 +30,7 @@
 #include "io/atomic_file.hpp"
 #include "io/byte_encoding.hpp"
 #include "io/file_limits.hpp"
+#include "io/image_headers.hpp"
 #include "io/pcx_file.hpp"
 
 namespace rise {
@@ -209,43 +210,6 @@ std::string explainedStbFailure() {
   return meaning + " (stb_image: " + reason + ")";
 }
 
-// An uncompressed TGA file (image types 2 and 3: true colour and grey) holds
-// every pixel after its 18-byte header and its identification field.
-// stb_image reads past the end of a short one as if the pixels were there,
-// so that a file of a few bytes could make an image of millions of pixels.
-// TGA has no signature: stb_image takes for one, whatever its name, a file
-// that no other format claims (BMP is the only one whose third byte can be
-// 2 or 3) with such a header.
-void checkUncompressedTgaIsWhole(std::FILE* file, const std::filesystem::path& path) {
-  std::uint8_t header[18];
-  const long start = std::ftell(file);
-  const bool read = std::fread(header, 1, sizeof header, file) == sizeof header;
-  std::fseek(file, start, SEEK_SET);
-  const bool bmp = header[0] == 'B' && header[1] == 'M';
-  if (!read || bmp || header[1] > 1 || (header[2] != 2 && header[2] != 3)) return;
-  const int width = header[12] | header[13] << 8;
-  const int height = header[14] | header[15] << 8;
-  const std::uintmax_t pixelBytes = (header[16] + 7u) / 8u;
-  const std::uintmax_t needed =
-      sizeof header + header[0] + static_cast<std::uintmax_t>(width) * height * pixelBytes;
-  const std::uintmax_t size = std::filesystem::file_size(path);
-  if (size < needed)
-    throw fileError(path, "the file is cut short: its TGA header promises " +
-                              std::to_string(width) + " x " + std::to_string(height) + " pixels, " +
-                              std::to_string(needed) + " bytes, but it has " +
-                              std::to_string(size));
-}
-
-// The size stb_image finds in the header, checked before it decodes.
-void checkImageSize(std::FILE* file, const std::filesystem::path& path) {
-  int width = 0, height = 0, channels = 0;
-  if (!stbi_info_from_file(file, &width, &height, &channels)) return;  // decoding says why
-  if (static_cast<std::int64_t>(width) * height > kMostImagePixels)
-    throw fileError(path, "the image is " + std::to_string(width) + " x " + std::to_string(height) +
-                              " pixels, more than the " + std::to_string(kMostImagePixels) +
-                              " (8192 x 4096) that RISE reads");
-}
-
 // PNG, JPEG, TGA, BMP and the other 8-bit formats stb_image reads.
 Image readEightBitImage(std::FILE* file, const std::filesystem::path& path, Encoding encoding) {
   int width = 0;
@@ -283,6 +247,8 @@ Image readExr(const std::filesystem::path& path) {
   try {
     Imf::InputFile input(path.c_str());
     const Imath::Box2i window = input.header().dataWindow();
+    checkImageSize(std::int64_t{window.max.x} - window.min.x + 1,
+                   std::int64_t{window.max.y} - window.min.y + 1, path);
     Image image(window.max.x - window.min.x + 1, window.max.y - window.min.y + 1);
     char* origin = reinterpret_cast<char*>(&image.at(0, 0)) -
                    (static_cast<std::ptrdiff_t>(window.min.y) * image.width() + window.min.x) *
@@ -297,6 +263,8 @@ Image readExr(const std::filesystem::path& path) {
     input.setFrameBuffer(frameBuffer);
     input.readPixels(window.min.y, window.max.y);
     return image;
+  } catch (const ImageFileError&) {
+    throw;
   } catch (const std::exception& error) {
     throw fileError(path, because("cannot read OpenEXR", error.what()));
   }
@@ -314,8 +282,7 @@ Image readImage(const std::filesystem::path& path, Encoding encoding,
                                                              std::fclose);
   if (!file) throw fileError(path, because("cannot read", std::strerror(errno)));
   // stb_image reads the signature and the header and puts the file back where it was.
-  checkImageSize(file.get(), path);
-  checkUncompressedTgaIsWhole(file.get(), path);
+  checkStbImageHeader(file.get(), path);
   if (stbi_is_hdr_from_file(file.get())) return readHdrImage(file.get(), path);
   return readEightBitImage(file.get(), path, encoding);
 }

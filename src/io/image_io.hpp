@@ -42,10 +42,11 @@ void checkImageFormat(const std::filesystem::path& path);
 // models) by RISE's own reader, PNG, JPEG, TGA, BMP, PNM and the others
 // through stb_image, each decoded by `encoding` (sRGB for colours, linear for
 // data such as normal maps); Radiance HDR and OpenEXR kept as their linear
-// values. Files larger than kLargestImageFile and images of more than
-// kMostImagePixels are refused (file_limits.hpp). Throws ImageFileError naming the file and what
-// failed. A file read with a fix (a PCX palette without its marker) adds a
-// sentence saying so to `warnings`, when given.
+// values. Files larger than kLargestImageFile are refused (file_limits.hpp),
+// and so are headers that promise more than the file holds, more pixels than
+// kMostImagePixels or more than the memory allows (image_headers.hpp).
+// Throws ImageFileError naming the file and what failed. A file read with a fix (a PCX palette
+// without its marker) adds a sentence saying so to `warnings`, when given.
 Image readImage(const std::filesystem::path& path, Encoding encoding = Encoding::Srgb,
                 std::vector<std::string>* warnings = nullptr);
 

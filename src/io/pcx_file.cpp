@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "io/file_limits.hpp"
+#include "io/image_headers.hpp"
 
 namespace rise {
 
@@ -55,10 +55,7 @@ PcxLayout readLayout(std::span<const std::uint8_t> bytes, const std::string& nam
     throw pcxError(name, "the PCX header is corrupt: its image is " + std::to_string(layout.width) +
                              " x " + std::to_string(layout.height) + " with lines of " +
                              std::to_string(layout.bytesPerLine) + " bytes");
-  if (static_cast<std::int64_t>(layout.width) * layout.height > kMostImagePixels)
-    throw pcxError(name, "the image is " + std::to_string(layout.width) + " x " +
-                             std::to_string(layout.height) + " pixels, more than the " +
-                             std::to_string(kMostImagePixels) + " (8192 x 4096) that RISE reads");
+  checkImageSize(layout.width, layout.height, name);
   return layout;
 }
 

@@ -100,6 +100,10 @@ class DepthSorter {
                      [&](int a, int b) { return extents_[a].farthest < extents_[b].farthest; });
     if (steps_) recordInitialOrder(sorted);
     WaitingList waiting(std::move(sorted), extents_);
+    // Refused before the first comparison, not after two billion.
+    if (const std::uint64_t pairs = waiting.overlappingPairs(); pairs > kMostDepthSortComparisons)
+      throw tooManyComparisons(" (the depths of " + std::to_string(pairs) +
+                               " pairs of them overlap)");
     std::vector<int> order;
     while (!waiting.isEmpty()) {
       if (!resolveFront(waiting)) continue;
@@ -161,14 +165,17 @@ class DepthSorter {
     return false;
   }
 
+  RenderLimitError tooManyComparisons(const std::string& found) const {
+    return RenderLimitError("depth sort needs more than " +
+                            std::to_string(kMostDepthSortComparisons) +
+                            " comparisons of pairs of polygons to order this scene's " +
+                            std::to_string(screen_.polygons.size()) + " polygons" + found +
+                            "; expected a scene it can order within that: render it with "
+                            "z-buffer or scanline, or with fewer polygons (--tessellation)");
+  }
+
   bool cannotHide(int p, int q) {
-    if (++counters_.comparisons > kMostDepthSortComparisons)
-      throw RenderLimitError("depth sort needs more than " +
-                             std::to_string(kMostDepthSortComparisons) +
-                             " comparisons of pairs of polygons to order this scene's " +
-                             std::to_string(screen_.polygons.size()) +
-                             " polygons; expected a scene it can order within that: render it with "
-                             "z-buffer or scanline, or with fewer polygons (--tessellation)");
+    if (++counters_.comparisons > kMostDepthSortComparisons) throw tooManyComparisons("");
     int settledBy = kTestCount;
     for (int test = 0; test < kTestCount && settledBy == kTestCount; ++test)
       if (passes(static_cast<Test>(test), p, q)) settledBy = test;

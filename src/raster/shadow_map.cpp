@@ -182,6 +182,20 @@ std::uint64_t drawDepths(const Scene& scene, const TessellatedScene& tessellated
 
 }  // namespace
 
+std::uint64_t shadowMapBytes(const Scene& scene, const ShadowMapSettings& settings) {
+  const bool transparency =
+      std::any_of(scene.materials.begin(), scene.materials.end(),
+                  [](const Material& material) { return material.isTransparent(); });
+  const auto texels = static_cast<std::uint64_t>(settings.size) * settings.size;
+  std::uint64_t bytes = 0;
+  for (const auto& light : scene.lights) {
+    const bool atAPoint = std::isfinite(light->illuminate(Vec3(0.0f)).distance);
+    bytes += (atAPoint ? 6 : 1) * texels *
+             (sizeof(float) + (transparency ? sizeof(float) + sizeof(int) : 0));
+  }
+  return bytes;
+}
+
 ShadowMaps::ShadowMaps(const Scene& scene, const TessellatedScene& tessellated,
                        const ShadowMapSettings& settings, const Workers& workers)
     : scene_(scene), settings_(settings) {

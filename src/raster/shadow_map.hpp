@@ -53,6 +53,12 @@ struct DepthMap {
   std::vector<int> filterMaterial;
 };
 
+// The memory the maps of the scene's lights take, worked out before any is
+// made: six maps for a light at a point, one for a directional light, each
+// of size x size depths, and as many depths and materials again when the
+// scene has a transparent material.
+std::uint64_t shadowMapBytes(const Scene& scene, const ShadowMapSettings& settings);
+
 // A depth map per face of the cube around each light of one point (a point
 // light; an area light's centre), a single orthographic one for each
 // directional light, made of the scene's faces; they answer the shading

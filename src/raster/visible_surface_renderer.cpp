@@ -2,6 +2,8 @@
 
 #include <atomic>
 #include <optional>
+#include <string>
+#include <utility>
 
 #include "core/random.hpp"
 #include "core/sampler.hpp"
@@ -30,6 +32,16 @@ namespace {
 // and the images written from them, each pass's own image and buffers and
 // their frame's per-pixel arrays.
 constexpr std::uint64_t kVisibleSurfaceBytesPerPixel = 200;
+// A triangle of the tessellation, its face and its polygon on the screen,
+// with the lists the algorithms keep of them (area subdivision's, the
+// largest, measured at some 190 bytes).
+constexpr std::uint64_t kBytesPerTessellatedTriangle = 200;
+
+std::uint64_t tessellatedTriangles(const Scene& scene, int level) {
+  std::uint64_t triangles = 0;
+  for (const auto& shape : scene.shapes) triangles += shape->tessellatedTriangles(level);
+  return triangles;
+}
 
 }  // namespace
 
@@ -59,7 +71,28 @@ AlgorithmDescription visibleSurfaceAlgorithm(std::string_view name, std::string_
 }
 
 RenderNeeds visibleSurfaceNeeds(const Scene& scene, const RenderSettings& settings) {
-  return memoryNeeds(scene, settings, kVisibleSurfaceBytesPerPixel);
+  RenderNeeds needs = memoryNeeds(scene, settings, kVisibleSurfaceBytesPerPixel);
+  std::uint64_t largest = needs.bytes;
+  const auto add = [&](std::uint64_t bytes, std::string what, std::string toTakeLess) {
+    needs.bytes += bytes;
+    if (bytes <= largest) return;
+    largest = bytes;
+    needs.mostOfTheMemory = std::move(what);
+    needs.toTakeLess = std::move(toTakeLess);
+  };
+  const std::uint64_t triangles = tessellatedTriangles(scene, settings.tessellation);
+  add(triangles * kBytesPerTessellatedTriangle,
+      "the " + std::to_string(triangles) + " triangles of --tessellation " +
+          std::to_string(settings.tessellation),
+      "a lower --tessellation");
+  if (settings.shadows == ShadowMethod::Map) {
+    const std::string side = std::to_string(settings.shadowMapSize);
+    add(shadowMapBytes(scene, shadowMapSettings(settings)),
+        "the shadow maps of " + std::to_string(scene.lights.size()) + " lights, " + side + " x " +
+            side + " texels each",
+        "smaller shadow maps (--shadow-map-size)");
+  }
+  return needs;
 }
 
 RenderNeeds VisibleSurfaceRenderer::needs(const Scene& scene,

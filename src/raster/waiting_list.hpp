@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "raster/polygon_relations.hpp"
@@ -28,6 +29,22 @@ class WaitingList {
     return static_cast<std::size_t>(std::find(list_.begin() + head_, list_.end(), piece) -
                                     list_.begin()) -
            head_;
+  }
+
+  // The pairs of waiting polygons whose depths overlap, as the list is when
+  // sorted: the comparisons that painting them takes at the least, as each
+  // is compared with those after it until one lies wholly nearer.
+  std::uint64_t overlappingPairs() const {
+    std::vector<float> farthest;
+    farthest.reserve(list_.size());
+    for (int piece : list_) farthest.push_back(extents_[piece].farthest);
+    std::uint64_t pairs = 0;
+    for (std::size_t i = 0; i < list_.size(); ++i) {
+      const auto after = farthest.begin() + static_cast<std::ptrdiff_t>(i) + 1;
+      pairs += static_cast<std::uint64_t>(
+          std::lower_bound(after, farthest.end(), extents_[list_[i]].nearest) - after);
+    }
+    return pairs;
   }
 
   void popFront() { sortedFrom_ = std::max(sortedFrom_, ++head_); }

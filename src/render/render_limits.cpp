@@ -1,12 +1,11 @@
 #include "render/render_limits.hpp"
 
-#include <sys/resource.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <optional>
+
+#include "core/memory_budget.hpp"
 
 namespace rise {
 namespace {
@@ -45,27 +44,6 @@ double raysPerSample(const Scene& scene, const RenderSettings& settings) {
   return hits * (1.0 + static_cast<double>(scene.lights.size()));
 }
 
-std::uint64_t physicalMemory() {
-  const long pages = sysconf(_SC_PHYS_PAGES);
-  const long pageSize = sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || pageSize <= 0) return kMostRenderMemory;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(pageSize);
-}
-
-// The address space the process already takes, from /proc/self/statm.
-std::uint64_t addressSpaceInUse() {
-  std::ifstream statm("/proc/self/statm");
-  std::uint64_t pages = 0;
-  statm >> pages;
-  return pages * static_cast<std::uint64_t>(sysconf(_SC_PAGE_SIZE));
-}
-
-std::string gigabytes(double bytes) {
-  char text[32];
-  std::snprintf(text, sizeof text, bytes < 10e9 ? "%.1f GB" : "%.0f GB", bytes / 1e9);
-  return text;
-}
-
 // "640", "1.8e19".
 std::string count(double value) {
   char text[32];
@@ -98,43 +76,23 @@ double recursionRays(const Scene& scene, const RenderSettings& settings) {
          raysPerSample(scene, settings);
 }
 
-std::uint64_t renderMemoryBudget(std::string* why) {
-  std::uint64_t budget = kMostRenderMemory;
-  std::string reason = "the most a render may take";
-  const auto machine = static_cast<std::uint64_t>(kShareOfMachineMemory * physicalMemory());
-  if (machine < budget) {
-    budget = machine;
-    reason = "3/4 of this machine's " + gigabytes(static_cast<double>(physicalMemory()));
-  }
-  rlimit limit{};
-  if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY) {
-    const std::uint64_t inUse = addressSpaceInUse();
-    const std::uint64_t left = limit.rlim_cur > inUse ? limit.rlim_cur - inUse : 0;
-    if (left < budget) {
-      budget = left;
-      reason = "what the address-space limit (ulimit -v) of " +
-               gigabytes(static_cast<double>(limit.rlim_cur)) + " leaves";
-    }
-  }
-  if (why) *why = reason;
-  return budget;
-}
-
 void checkRenderFits(const Scene& scene, const RenderSettings& settings, const Renderer& renderer) {
   if (settings.threads > kMostThreads)
     throw RenderLimitError("--threads " + std::to_string(settings.threads) + ": expected at most " +
                            std::to_string(kMostThreads) + " threads");
   const RenderNeeds needs = renderer.needs(scene, settings);
   std::string why;
-  const std::uint64_t budget = renderMemoryBudget(&why);
+  const std::uint64_t budget = memoryBudget(&why);
   if (needs.bytes > budget)
     throw RenderLimitError(
         "a " + std::to_string(settings.width) + " x " + std::to_string(settings.height) +
         " image with " + samplesAPixel(settings) + " needs about " +
         gigabytes(static_cast<double>(needs.bytes)) + " to render, more than the " +
-        gigabytes(static_cast<double>(budget)) + " it may take (" + why +
-        "); expected a smaller image (--width, --height or the scene's 'width' and "
-        "'height')");
+        gigabytes(static_cast<double>(budget)) + " it may take (" + why + ")" +
+        (needs.mostOfTheMemory.empty()
+             ? "; expected a smaller image (--width, --height or the scene's 'width' and "
+               "'height')"
+             : ", most of it for " + needs.mostOfTheMemory + "; expected " + needs.toTakeLess));
   if (needs.rays > kMostRays) {
     const Material* branching = branchingMaterial(scene);
     throw RenderLimitError(
@@ -153,12 +111,8 @@ void checkRenderFits(const Scene& scene, const RenderSettings& settings, const R
 
 void checkWorkingMemoryFits(std::uint64_t bytes, const std::string& what,
                             const std::string& instead) {
-  std::string why;
-  const std::uint64_t budget = renderMemoryBudget(&why);
-  if (bytes > budget)
-    throw RenderLimitError(what + " would take about " + gigabytes(static_cast<double>(bytes)) +
-                           ", more than the " + gigabytes(static_cast<double>(budget)) +
-                           " a render may take (" + why + "); expected " + instead);
+  if (const std::optional<std::string> problem = memoryProblem(bytes, what))
+    throw RenderLimitError(*problem + "; expected " + instead);
 }
 
 }  // namespace rise

@@ -9,7 +9,8 @@
 // those that trace rays, the most rays a sample can become where materials
 // both reflect and refract (each hit then spawns two rays, down to the
 // maximum depth). Those are held against the memory a render may take and
-// the most rays a render may trace.
+// the most rays a render may trace; the memory, what RISE may take
+// (core/memory_budget.hpp).
 #pragma once
 
 #include <cstdint>
@@ -27,10 +28,6 @@ class RenderLimitError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// The memory a render may take at most, whatever the machine.
-inline constexpr std::uint64_t kMostRenderMemory = 64'000'000'000;
-// Of the machine's memory, the share a render may take.
-inline constexpr double kShareOfMachineMemory = 0.75;
 // Rays at some ten million a second: a day and more.
 inline constexpr double kMostRays = 1e12;
 // Threads beyond the cores only wait; each takes a stack of its own.
@@ -55,11 +52,6 @@ RenderNeeds memoryNeeds(const Scene& scene, const RenderSettings& settings,
 // a path down to the maximum depth, or a tree of them where a material both
 // reflects and refracts; each hit with a shadow ray a light.
 double recursionRays(const Scene& scene, const RenderSettings& settings);
-
-// The memory a render may take here: the least of kMostRenderMemory, the
-// share of the machine's memory, and what the address-space limit of the
-// process (ulimit -v) leaves of it. `why` says which it is.
-std::uint64_t renderMemoryBudget(std::string* why = nullptr);
 
 // Throws RenderLimitError when a render by `renderer` needs more than the
 // limits allow, or asks for more than kMostThreads threads.

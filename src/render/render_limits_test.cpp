@@ -5,6 +5,7 @@
 #include <string>
 
 #include "algorithms/registry.hpp"
+#include "core/memory_budget.hpp"
 
 namespace rise {
 namespace {
@@ -45,9 +46,9 @@ TEST(RenderLimits, NeedsGrowWithThePixelsAndTheSamples) {
 
 TEST(RenderLimits, TheBudgetIsNeverMoreThanTheDocumentedLimit) {
   std::string why;
-  const std::uint64_t budget = renderMemoryBudget(&why);
+  const std::uint64_t budget = memoryBudget(&why);
   EXPECT_GT(budget, 0u);
-  EXPECT_LE(budget, kMostRenderMemory);
+  EXPECT_LE(budget, kMostMemory);
   EXPECT_FALSE(why.empty());
 }
 
@@ -102,7 +103,7 @@ TEST(RenderLimits, RefusesMoreThreadsThanTheLimit) {
 TEST(RenderLimits, RefusesWorkingMemoryBeyondTheBudgetNamingWhatItIs) {
   EXPECT_NO_THROW(checkWorkingMemoryFits(1000, "the lists", "fewer"));
   try {
-    checkWorkingMemoryFits(renderMemoryBudget() + 1, "the lists", "fewer of them");
+    checkWorkingMemoryFits(memoryBudget() + 1, "the lists", "fewer of them");
     ADD_FAILURE() << "no refusal";
   } catch (const RenderLimitError& error) {
     const std::string message = error.what();

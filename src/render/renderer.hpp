@@ -139,6 +139,11 @@ struct AlgorithmDescription {
 struct RenderNeeds {
   std::uint64_t bytes = 0;
   double rays = 0.0;
+  // Where the memory is not mostly the image's: what takes most of it ("the
+  // shadow maps of 4 lights, 8192 x 8192 texels each") and how to take less
+  // ("smaller shadow maps (--shadow-map-size)").
+  std::string mostOfTheMemory = {};
+  std::string toTakeLess = {};
 };
 
 // One image synthesis algorithm. The command line, the studio, the tests and

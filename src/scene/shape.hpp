@@ -125,6 +125,13 @@ class Shape {
   // every vertex on the exact surface with its normal and texture
   // coordinates.
   virtual void tessellate(const TessellationSettings& settings, Tessellation& out) const = 0;
+  // The triangles tessellate() makes at `level`, at most, known without
+  // making them: the visible-surface algorithms' memory is worked out from
+  // them before a render (Renderer::needs). A shape of a few flat faces
+  // makes about as many as its primitives.
+  virtual std::uint64_t tessellatedTriangles(int /*level*/) const {
+    return static_cast<std::uint64_t>(primitiveCount());
+  }
 
   // Index of the shape's material in Scene::materials.
   int material() const { return material_; }

@@ -137,4 +137,10 @@ void Cone::tessellate(const TessellationSettings& settings, Tessellation& out) c
   out.enclosesSolid = true;
 }
 
+// The side's rings of quadrilaterals up to the apex, and the base's fan.
+std::uint64_t Cone::tessellatedTriangles(int level) const {
+  const auto segments = static_cast<std::uint64_t>(segmentsPerTurn(level));
+  return segments * (2 * static_cast<std::uint64_t>(std::max(1, level / 2)) + 1);
+}
+
 }  // namespace rise

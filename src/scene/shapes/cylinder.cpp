@@ -115,4 +115,9 @@ void Cylinder::tessellate(const TessellationSettings& settings, Tessellation& ou
   out.enclosesSolid = true;
 }
 
+// The side's quadrilaterals and the two caps' fans.
+std::uint64_t Cylinder::tessellatedTriangles(int level) const {
+  return 4 * static_cast<std::uint64_t>(segmentsPerTurn(level));
+}
+
 }  // namespace rise

@@ -16,6 +16,7 @@ class Cylinder final : public Shape {
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+  std::uint64_t tessellatedTriangles(int level) const override;
 
  private:
   Vec3 base_;

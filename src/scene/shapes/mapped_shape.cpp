@@ -54,4 +54,8 @@ void MappedShape::tessellate(const TessellationSettings& settings, Tessellation&
   out.projection = &mapping_;
 }
 
+std::uint64_t MappedShape::tessellatedTriangles(int level) const {
+  return shape_->tessellatedTriangles(level);
+}
+
 }  // namespace rise

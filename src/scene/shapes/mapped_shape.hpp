@@ -24,6 +24,7 @@ class MappedShape final : public Shape {
   SurfacePoint pointAt(const Ray& ray, const Hit& hit) const override;
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+  std::uint64_t tessellatedTriangles(int level) const override;
 
   int primitiveCount() const override;
   Bounds3 primitiveBounds(int primitive) const override;

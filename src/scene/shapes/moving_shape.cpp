@@ -64,4 +64,8 @@ void MovingShape::tessellate(const TessellationSettings& settings, Tessellation&
                    out);
 }
 
+std::uint64_t MovingShape::tessellatedTriangles(int level) const {
+  return shape_->tessellatedTriangles(level);
+}
+
 }  // namespace rise

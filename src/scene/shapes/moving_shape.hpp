@@ -22,6 +22,7 @@ class MovingShape final : public Shape {
   // The box that holds the shape throughout the shutter interval.
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+  std::uint64_t tessellatedTriangles(int level) const override;
 
  private:
   AffineMap placementAt(float time) const;

@@ -82,4 +82,9 @@ void Plane::tessellate(const TessellationSettings& settings, Tessellation& out) 
   }
 }
 
+// A square of 2 level x 2 level quadrilaterals.
+std::uint64_t Plane::tessellatedTriangles(int level) const {
+  return 8 * static_cast<std::uint64_t>(level) * static_cast<std::uint64_t>(level);
+}
+
 }  // namespace rise

@@ -83,4 +83,10 @@ void Sphere::tessellate(const TessellationSettings& settings, Tessellation& out)
   out.enclosesSolid = true;
 }
 
+// Rings of quadrilaterals from pole to pole, triangles at the poles.
+std::uint64_t Sphere::tessellatedTriangles(int level) const {
+  const auto segments = static_cast<std::uint64_t>(segmentsPerTurn(level));
+  return segments * segments;
+}
+
 }  // namespace rise

@@ -40,6 +40,7 @@ class Sphere final : public Shape {
   Bounds3 bounds() const override;
   bool primitiveSphere(int primitive, Vec3& center, float& radiusSquared) const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+  std::uint64_t tessellatedTriangles(int level) const override;
 
  private:
   Vec3 center_;

@@ -43,4 +43,8 @@ void TransformedShape::tessellate(const TessellationSettings& settings, Tessella
   tessellatePlaced(*shape_, placement_.worldFromObject(), settings, out);
 }
 
+std::uint64_t TransformedShape::tessellatedTriangles(int level) const {
+  return shape_->tessellatedTriangles(level);
+}
+
 }  // namespace rise

@@ -21,6 +21,7 @@ class TransformedShape final : public Shape {
   SurfacePoint pointAt(const Ray& ray, const Hit& hit) const override;
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+  std::uint64_t tessellatedTriangles(int level) const override;
 
   // The primitives of the shape inside, bounded in the world and tested in
   // the shape's own space.
