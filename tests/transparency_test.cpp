@@ -1,10 +1,11 @@
-// Transparency in depth sort, the z-buffer and the scanline algorithm:
+// Transparency in depth sort, area subdivision, the z-buffer and the scanline
+// algorithm:
 // coloured transparent squares stacked over a background and over an opaque
 // square give the colour a formula in the test computes, each surface's own
 // light plus what is behind it filtered by its transmission times its colour;
 // with an index of refraction of 1, which bends no ray, the same image as
 // Whitted's ray tracer, shadows through the squares included; and the glass
-// sphere of the classic scene looks the same to the three. The z-buffer
+// sphere of the classic scene looks the same to all four. The z-buffer
 // blends both ways: sorted, and by Carpenter's A-buffer (a_buffer_test.cpp).
 #include <gtest/gtest.h>
 
@@ -27,6 +28,7 @@ struct Blender {
 };
 constexpr Blender kBlenders[] = {
     {"depth-sort", Transparency::Sorted, "depth-sort"},
+    {"area-subdivision", Transparency::Sorted, "area-subdivision"},
     {"z-buffer", Transparency::Sorted, "z-buffer"},
     {"z-buffer", Transparency::ABuffer, "z-buffer --transparency a-buffer"},
     {"scanline", Transparency::Sorted, "scanline"},
@@ -141,18 +143,19 @@ TEST(Transparency, BlendsByDepthNotByDrawingOrder) {
 }
 
 // The classic scene's glass sphere, at sizes and shapes other than the
-// example's: the scanline algorithm blends it as the z-buffer does, within
-// the examples' tolerance (a pixel in a hundred).
-TEST(Transparency, TheGlassSphereLooksTheSameToTheScanlineAsToTheZBuffer) {
+// example's: the scanline algorithm and area subdivision blend it as the
+// z-buffer does, within the examples' tolerance (a pixel in a hundred).
+TEST(Transparency, TheGlassSphereLooksTheSameToEveryBlenderAsToTheZBuffer) {
   const Scene scene = classicScene();
   for (const auto& [width, height] : {std::pair{150, 61}, std::pair{53, 90}}) {
     const RenderSettings settings = settingsAtSize(scene, width, height);
-    const RenderResult scanline = render("scanline", scene, settings);
-    EXPECT_GT(scanline.stats.value("transparent_blends"), 0.0);
-    EXPECT_LE(
-        raster_testing::pixelsDiffering(scanline.image, render("z-buffer", scene, settings).image),
-        width * height / 100)
-        << width << " x " << height;
+    const Image zBuffer = render("z-buffer", scene, settings).image;
+    for (const std::string_view algorithm : {"scanline", "area-subdivision"}) {
+      const RenderResult blended = render(algorithm, scene, settings);
+      EXPECT_GT(blended.stats.value("transparent_blends"), 0.0) << algorithm;
+      EXPECT_LE(raster_testing::pixelsDiffering(blended.image, zBuffer), width * height / 100)
+          << algorithm << " at " << width << " x " << height;
+    }
   }
 }
 

@@ -19,6 +19,12 @@
 //     are compared in depth there, and the nearest is drawn.
 // Only the polygons not disjoint from a window are handed to its quadrants.
 //
+// A transparent polygon (raster/transparency.hpp) hides nothing: it never
+// fills a window as the surrounder in front, so that a window it reaches
+// into is settled only by it alone (blended over the background) or at the
+// pixel, where the nearest opaque polygon is drawn and the transparent ones
+// in front of it are blended over it, farthest first.
+//
 // Depths are inverse depths w = 1 / n, affine across a polygon's image, so
 // their extremes over a window lie at its corners. The windows waiting to be
 // examined are shared among threads. Cost of a pixel:
@@ -30,10 +36,13 @@
 #include <array>
 #include <cstdint>
 #include <numeric>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "raster/polygon_coverage.hpp"
+#include "raster/transparency.hpp"
 
 namespace rise {
 
@@ -42,7 +51,8 @@ const AlgorithmDescription& AreaSubdivisionRenderer::description() const {
       "area-subdivision",
       "Warnock's area subdivision: quarter the screen until each window is simple",
       "J. E. Warnock, A hidden-surface algorithm for computer generated half-tone "
-      "pictures, University of Utah, TR 4-15, 1969");
+      "pictures, University of Utah, TR 4-15, 1969",
+      {Effect::Transparency});
   return description;
 }
 
@@ -62,6 +72,7 @@ struct SubdivisionCounters {
   std::uint64_t pixelWindows = 0;
   std::uint64_t depthTests = 0;
   std::uint64_t pixelsWritten = 0;
+  std::uint64_t blends = 0;
 
   SubdivisionCounters& operator+=(const SubdivisionCounters& other) {
     for (int relation = 0; relation < kRelationCount; ++relation)
@@ -74,6 +85,7 @@ struct SubdivisionCounters {
     pixelWindows += other.pixelWindows;
     depthTests += other.depthTests;
     pixelsWritten += other.pixelsWritten;
+    blends += other.blends;
     return *this;
   }
 };
@@ -106,11 +118,13 @@ const char* describe(Verdict verdict) {
     case Verdict::Empty:
       return "every polygon is disjoint from it: background";
     case Verdict::OnePolygon:
-      return "one polygon alone reaches into it: drawn over the background";
+      return "one polygon alone reaches into it: drawn (or, transparent, blended) over the "
+             "background";
     case Verdict::SurrounderInFront:
       return "a surrounding polygon is in front of all the others: it fills the window";
     case Verdict::Pixel:
-      return "a single pixel: the nearest polygon at its centre is drawn";
+      return "a single pixel: the nearest opaque polygon at its centre is drawn, the "
+             "transparent ones in front of it blended over it";
     case Verdict::Quartered:
       return "not simple: quartered";
   }
@@ -137,6 +151,7 @@ class Subdivision {
       }
       extents_.push_back({low, high});
       nearest_.push_back(nearest);
+      transparent_.push_back(frame.isTransparent(polygon.face));
     }
   }
 
@@ -159,7 +174,7 @@ class Subdivision {
       if (steps) relations.push_back(relation);
       if (relation == kDisjoint) continue;
       present.push_back(polygon);
-      if (relation == kSurrounding &&
+      if (relation == kSurrounding && !transparent_[polygon] &&
           (frontSurrounder < 0 ||
            farthestIn(polygon, low, high) > farthestIn(frontSurrounder, low, high)))
         frontSurrounder = polygon;
@@ -238,28 +253,51 @@ class Subdivision {
     });
   }
 
-  // The nearest polygon covering the centre; of equal depths, the first.
+  // The nearest opaque polygon covering the centre (of equal depths, the
+  // first), and the transparent ones in front of it blended over it.
   void resolvePixel(int x, int y, const std::vector<int>& present,
                     SubdivisionCounters& counters) const {
     const Vec2 centre = pixelCentre(x, y);
     int nearest = -1;
     float nearestInverseDepth = 0.0f;
+    std::vector<std::pair<float, int>> transparent;  // inverse depth, polygon
     for (int polygon : present) {
       if (!coverages_[polygon].covers(centre)) continue;
       ++counters.depthTests;
       frame_.addCost(x, y, 1.0f);
       const float inverseDepth =
           screen_.faces[screen_.polygons[polygon].face].inverseDepthAt(centre);
-      if (inverseDepth <= nearestInverseDepth) continue;
-      nearest = polygon;
-      nearestInverseDepth = inverseDepth;
+      if (transparent_[polygon]) {
+        transparent.emplace_back(inverseDepth, polygon);
+      } else if (inverseDepth > nearestInverseDepth) {
+        nearest = polygon;
+        nearestInverseDepth = inverseDepth;
+      }
     }
-    if (nearest >= 0) draw(x, y, nearest, counters);
+    std::stable_sort(transparent.begin(), transparent.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<int> inFront;
+    for (const auto& [inverseDepth, polygon] : transparent)
+      if (inverseDepth > nearestInverseDepth) inFront.push_back(screen_.polygons[polygon].face);
+    showAt(x, y, nearest, inFront, counters);
   }
 
   void draw(int x, int y, int polygon, SubdivisionCounters& counters) const {
+    const int face = screen_.polygons[polygon].face;
+    if (transparent_[polygon])
+      showAt(x, y, -1, std::span<const int>(&face, 1), counters);
+    else
+      showAt(x, y, polygon, {}, counters);
+  }
+
+  // The opaque polygon `opaque` (-1: the background) and the transparent
+  // faces over it, farthest first.
+  void showAt(int x, int y, int opaque, std::span<const int> over,
+              SubdivisionCounters& counters) const {
+    if (opaque < 0 && over.empty()) return;
     ++counters.pixelsWritten;
-    frame_.setVisible(x, y, screen_.polygons[polygon].face);
+    counters.blends +=
+        showLayers(frame_, x, y, opaque >= 0 ? screen_.polygons[opaque].face : -1, over);
   }
 
   void chargeToPixels(const PixelRect& window, float work) const {
@@ -317,6 +355,7 @@ class Subdivision {
   std::vector<PolygonCoverage> coverages_;
   std::vector<Extent> extents_;
   std::vector<float> nearest_;  // each polygon's largest w
+  std::vector<bool> transparent_;
 };
 
 }  // namespace
@@ -338,6 +377,7 @@ void AreaSubdivisionRenderer::resolveVisibility(const ScreenGeometry& screen,
       });
   stats.add("depth_tests", static_cast<double>(total.depthTests));
   stats.add("pixels_written", static_cast<double>(total.pixelsWritten));
+  stats.add("transparent_blends", static_cast<double>(total.blends));
   stats.add("windows", static_cast<double>(total.windows));
   stats.add("subdivisions", static_cast<double>(total.subdivisions));
   stats.add("windows_empty", static_cast<double>(total.emptyWindows));
