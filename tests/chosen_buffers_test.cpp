@@ -1,16 +1,22 @@
 // A front end that writes only some auxiliary buffers (`rise render --aov`)
 // names them in the settings, and the algorithms make only those: every
 // algorithm, with one sample and with several, gives the same image and the
-// same values in the buffers it was asked for as when it makes them all.
+// same values in the buffers it was asked for as when it makes them all. The
+// depth buffer's picture is the same for every algorithm, and of many grey
+// levels, whatever the floor's far reaches.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "algorithms/registry.hpp"
 #include "algorithms/settings_for_scene.hpp"
+#include "io/image_io.hpp"
 #include "io/scene_file.hpp"
+#include "render/buffer_images.hpp"
 
 namespace rise {
 namespace {
@@ -76,6 +82,34 @@ TEST(ChosenBuffers, EveryShadingGivesTheSameImageWithoutTheDepthAndNormal) {
       }
     }
   }
+}
+
+// The README's `--aov depth` of the spheres example: the ray tracer's
+// infinite floor and the z-buffer's floor of 100,000 units give the same
+// picture, of a hundred grey levels and more, not a score of them.
+TEST(ChosenBuffers, TheDepthPictureHasManyLevelsAndIsAlikeForEveryAlgorithm) {
+  const Scene scene = loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/spheres.yaml");
+  RenderRequest request;
+  request.image.width = 160;
+  request.image.height = 120;
+  RenderSettings settings = settingsFor(scene, request);
+  settings.buffers = {"depth"};
+  const auto picture = [&](std::string_view algorithm) {
+    RenderObserver observer;
+    return visualizeBuffer(
+        "depth", findRenderer(algorithm)->render(scene, settings, observer).buffers.at("depth"));
+  };
+  const Image traced = picture("ray-tracing"), drawn = picture("z-buffer");
+  std::set<long> levels;
+  int apart = 0;
+  for (int y = 0; y < traced.height(); ++y)
+    for (int x = 0; x < traced.width(); ++x) {
+      const long level = std::lround(255.0f * srgbFromLinear(traced.at(x, y).r));
+      levels.insert(level);
+      apart += std::abs(level - std::lround(255.0f * srgbFromLinear(drawn.at(x, y).r))) > 3;
+    }
+  EXPECT_GE(levels.size(), 100u);
+  EXPECT_LE(apart, traced.width() * traced.height() / 50);
 }
 
 }  // namespace

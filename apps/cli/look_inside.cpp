@@ -86,7 +86,8 @@ int explain(const ExplainOptions& options) {
     std::cerr << "rise: " << error.what() << "\n";
     return kExitOutputError;
   }
-  std::cerr << renderer.name() << ": " << recorder.allSteps().size() << " steps recorded\n"
+  std::cerr << renderer.name() << ": " << counted(recorder.allSteps().size(), "step")
+            << " recorded\n"
             << "wrote " << (directory / "index.html").string() << "\n";
   return 0;
 }

@@ -142,8 +142,9 @@ int validate(const std::string& scenePath) {
     if (!verdicts.able.empty()) std::cerr << "  " << joined(verdicts.able) << ": would render it\n";
     return kExitBadInput;
   }
-  std::cout << scene.source << ": ok (" << scene.shapes.size() << " objects, "
-            << scene.lights.size() << " lights, " << scene.materials.size() << " materials)\n";
+  std::cout << scene.source << ": ok (" << counted(scene.shapes.size(), "object") << ", "
+            << counted(scene.lights.size(), "light") << ", "
+            << counted(scene.materials.size(), "material") << ")\n";
   return 0;
 }
 

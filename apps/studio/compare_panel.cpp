@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "algorithms/registry.hpp"
+#include "core/text.hpp"
 #include "studio.hpp"
 
 namespace rise::studio {
@@ -57,7 +58,7 @@ void Studio::finishComparisonStep() {
   comparison_.renders.push_back({&job.renderer().description(), job.result()});
   comparison_.textures.emplace_back().upload(job.result().image);
   if (comparison_.pending.empty()) {
-    note("compared " + std::to_string(comparison_.renders.size()) + " algorithms");
+    note("compared " + counted(comparison_.renders.size(), "algorithm"));
     comparison_.job.reset();
     return;
   }

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "algorithms/registry.hpp"
+#include "core/text.hpp"
 #include "reports/colours.hpp"
 #include "reports/ray_tree_text.hpp"
 #include "studio.hpp"
@@ -99,8 +100,8 @@ void Studio::finishInspection() {
              ? "pixel " + pixel +
                    ": no ray tree recorded (the adaptive pattern traces no fixed samples: "
                    "choose another pattern)"
-             : "pixel " + pixel + ": " + std::to_string(inspection_.trees.size()) +
-                   " samples traced; their rays are in the Ray tree panel and the viewport");
+             : "pixel " + pixel + ": " + counted(inspection_.trees.size(), "sample") +
+                   " traced; their rays are in the Ray tree panel and the viewport");
   }
   inspection_.job.reset();
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -38,6 +39,15 @@ std::string joined(const Names& names, std::string_view separator = ", ") {
   std::string text;
   for (const auto& name : names) appendListed(text, separator, name);
   return text;
+}
+
+// A count with its noun, singular for one: "1 light", "3 lights", "0 lights".
+// The plural is the noun with an s, or `plural` where it is not ("vertices").
+inline std::string counted(std::uint64_t count, std::string_view noun,
+                           std::string_view plural = {}) {
+  std::string text = std::to_string(count) + " ";
+  if (count == 1) return text.append(noun);
+  return plural.empty() ? text.append(noun).append("s") : text.append(plural);
 }
 
 // A name or value from a file as a message quotes it, in single quotes (or

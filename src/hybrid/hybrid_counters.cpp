@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "core/text.hpp"
+
 namespace rise {
 namespace {
 
@@ -33,9 +35,8 @@ Step passTwoStep(std::string title, const HybridCounters& counters,
                  const std::function<RayPassPixel(int, int)>& pixelAt,
                  const ForEachPixel& forEachPixel) {
   const auto count = [&](Count kind) { return static_cast<double>(counters.counts[kind]); };
-  Step step("rays", std::move(title) + ": " + std::to_string(counters.traced.rays()) + " rays, " +
-                        std::to_string(counters.traced.intersections.tests) +
-                        " intersection tests");
+  Step step("rays", std::move(title) + ": " + counted(counters.traced.rays(), "ray") + ", " +
+                        counted(counters.traced.intersections.tests, "intersection test"));
   step.values = {{"primary_rays_from_item_buffer", count(kFromItemBuffer)},
                  {"fallback_pixels", count(kOutside) + count(kInside)},
                  {"pixels_spawning_rays", count(kSpawning)},

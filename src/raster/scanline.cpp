@@ -185,8 +185,17 @@ class BandSweep {
   Step scanlineStep(int y) const {
     Step step;
     step.kind = "scanline";
-    step.text = "scanline " + std::to_string(y) + ": " + std::to_string(edges_.entering(y).size()) +
-                " edges enter, " + std::to_string(edges_.active().size()) + " are active";
+    const std::size_t entering = edges_.entering(y).size(), active = edges_.active().size();
+    step.text = "scanline " + std::to_string(y) + ": " + counted(entering, "edge") +
+                (entering == 1 ? " enters, " : " enter, ") + std::to_string(active) +
+                (active == 1 ? " is active" : " are active");
+    // A band is swept on its own, from an edge table of its own: every edge
+    // that crosses its first scanline enters there, begun above or not.
+    if (y == band_.y0 && y > 0)
+      step.text += " (the first scanline of the band of rows " + std::to_string(band_.y0) + " to " +
+                   std::to_string(band_.y1 - 1) +
+                   ", swept on its own: the edges that cross it enter its edge table here, "
+                   "wherever they begin)";
     const auto edgeRows = [&](const std::vector<ActiveEdge>& edges) {
       StepTable table{"", {"x", "dx/dy", "end scanline", "polygon"}, {}};
       for (const ActiveEdge& edge : edges)

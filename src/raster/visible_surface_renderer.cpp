@@ -7,6 +7,7 @@
 
 #include "core/random.hpp"
 #include "core/sampler.hpp"
+#include "core/text.hpp"
 #include "raster/shadow_map.hpp"
 #include "render/film.hpp"
 #include "render/render_limits.hpp"
@@ -88,8 +89,8 @@ RenderNeeds visibleSurfaceNeeds(const Scene& scene, const RenderSettings& settin
   if (settings.shadows == ShadowMethod::Map) {
     const std::string side = std::to_string(settings.shadowMapSize);
     add(shadowMapBytes(scene, shadowMapSettings(settings)),
-        "the shadow maps of " + std::to_string(scene.lights.size()) + " lights, " + side + " x " +
-            side + " texels each",
+        "the shadow maps of " + counted(scene.lights.size(), "light") + ", " + side + " x " + side +
+            " texels each",
         "smaller shadow maps (--shadow-map-size)");
   }
   return needs;

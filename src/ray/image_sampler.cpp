@@ -3,6 +3,8 @@
 #include <optional>
 #include <string>
 
+#include "core/text.hpp"
+
 namespace rise {
 
 TileTrace::TileTrace(const PixelRect& area, FilmTile film, RenderResult& buffers,
@@ -28,8 +30,8 @@ Step tileStep(const TileTrace& tile) {
   const PixelRect& area = tile.area();
   Step step{"tile", "tile " + std::to_string(area.x0) + "," + std::to_string(area.y0) + " " +
                         std::to_string(area.width()) + "x" + std::to_string(area.height()) +
-                        " traced: " + std::to_string(tile.counters.rays()) + " rays, " +
-                        std::to_string(tile.counters.intersections.tests) + " intersection tests"};
+                        " traced: " + counted(tile.counters.rays(), "ray") + ", " +
+                        counted(tile.counters.intersections.tests, "intersection test")};
   step.values = {{"rays", static_cast<double>(tile.counters.rays())},
                  {"intersection_tests", static_cast<double>(tile.counters.intersections.tests)}};
   step.shapes.push_back({StepShape::Kind::Rectangle,

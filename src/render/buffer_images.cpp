@@ -25,11 +25,16 @@ Image visualizeDepth(const Image& raw) {
       nearest = std::min(nearest, pixel.r);
       farthest = std::max(farthest, pixel.r);
     }
-  const float range = farthest - nearest;
+  // Linear in the inverse depth, as a z-buffer keeps it: the levels go to
+  // the near surfaces, where the eye tells depths apart, and the far reaches
+  // of a floor, a ray tracer's infinite plane or a rasterizer's square of
+  // 100,000 units alike, take the few darkest.
+  const float nearestInverse = 1.0f / nearest, farthestInverse = 1.0f / farthest;
+  const float range = nearestInverse - farthestInverse;
   return mapPixels(raw, [&](const Color& depth) {
     if (!std::isfinite(depth.r)) return Color(0.0f);
     // When every hit is at one depth, all of them are the nearest.
-    return Color(range > 0.0f ? (farthest - depth.r) / range : 1.0f);
+    return Color(range > 0.0f ? (1.0f / depth.r - farthestInverse) / range : 1.0f);
   });
 }
 

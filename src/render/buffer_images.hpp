@@ -12,7 +12,9 @@ namespace rise {
 
 // The display image of the raw buffer called `name`:
 //  "depth"  grey: the nearest hit white, the farthest hit black, linear in
-//           between; pixels that hit nothing (infinite depth) black.
+//           the inverse depth 1/d between (as a z-buffer keeps it), so that
+//           the far reaches of a floor do not crush the near surfaces into a
+//           few levels; pixels that hit nothing (infinite depth) black.
 //  "normal" each unit normal n as the colour 0.5 n + 0.5 (x red, y green,
 //           z blue); pixels that hit nothing (zero normal) black.
 //  "cost"   each pixel's count of intersection tests divided by the largest

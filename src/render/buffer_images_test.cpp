@@ -27,11 +27,23 @@ TEST(BufferImages, DepthIsGreyFromNearWhiteToFarBlack) {
 
   ASSERT_EQ(depth.width(), 5);
   ASSERT_EQ(depth.height(), 1);
+  // Linear in 1 / depth: 1/2 white, 1/6 black.
   EXPECT_EQ(depth.at(0, 0), Color(1.0f));
-  EXPECT_EQ(depth.at(1, 0), Color(0.5f));
+  expectColorNear(depth.at(1, 0), Color(0.25f), 1e-6f);
   EXPECT_EQ(depth.at(2, 0), Color(0.0f));  // nothing hit
   EXPECT_EQ(depth.at(3, 0), Color(0.0f));
-  EXPECT_EQ(depth.at(4, 0), Color(0.25f));
+  expectColorNear(depth.at(4, 0), Color(0.1f), 1e-6f);
+}
+
+// A floor reaching a million units away takes the darkest levels, not all
+// but the lightest: surfaces 2 to 4 units away keep half the scale.
+TEST(BufferImages, AFarFloorLeavesTheNearSurfacesTheirLevels) {
+  const Image depth =
+      visualizeBuffer("depth", row({Color(2.0f), Color(3.0f), Color(4.0f), Color(1e6f)}));
+  EXPECT_EQ(depth.at(0, 0), Color(1.0f));
+  expectColorNear(depth.at(1, 0), Color(2.0f / 3.0f), 1e-5f);
+  expectColorNear(depth.at(2, 0), Color(0.5f), 1e-5f);
+  EXPECT_EQ(depth.at(3, 0), Color(0.0f));
 }
 
 TEST(BufferImages, DepthOfOneDistanceIsWhite) {

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "core/memory_budget.hpp"
+#include "core/text.hpp"
 
 namespace rise {
 namespace {
@@ -56,7 +57,7 @@ std::string count(double value) {
 
 std::string samplesAPixel(const RenderSettings& settings) {
   const int samples = settings.sampling.samples;
-  return std::to_string(samples) + (samples == 1 ? " sample" : " samples") + " a pixel";
+  return counted(static_cast<std::uint64_t>(samples), "sample") + " a pixel";
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <optional>
 
 namespace rise {
 
@@ -65,6 +67,18 @@ bool touches(const Step& step, const PixelRect& region) {
 
 }  // namespace
 
+void StepTally::add(const Step& step) {
+  const auto kind = std::find_if(kinds.begin(), kinds.end(),
+                                 [&](const auto& counted) { return counted.first == step.kind; });
+  if (kind == kinds.end())
+    kinds.emplace_back(step.kind, 1);
+  else
+    ++kind->second;
+  for (const PixelWrite& write : step.writes) ++(write.kept ? painted : hidden);
+  for (const PixelRect& area : step.settled)
+    settled += static_cast<std::uint64_t>(area.width()) * static_cast<std::uint64_t>(area.height());
+}
+
 std::vector<Step> StepRecorder::allSteps() const {
   std::vector<const Recorded*> ordered;
   {
@@ -84,24 +98,67 @@ std::vector<Step> StepRecorder::allSteps() const {
   return steps;
 }
 
+namespace {
+
+// A step's depth in a hierarchy, when it has one (Warnock's windows).
+std::optional<int> levelOf(const Step& step) {
+  for (const auto& [name, value] : step.values)
+    if (name == "level") return static_cast<int>(value);
+  return std::nullopt;
+}
+
+// Of the candidates, every which-th of a group is kept: of all of them
+// alike; or, for steps that have a level, the kept steps shared among the
+// levels, the shallow ones (few steps, large windows) kept whole and the
+// rest split evenly, so that every level shows.
+std::map<int, int> stridesByLevel(const std::vector<const Step*>& candidates, int keep) {
+  std::map<int, int> counts;
+  for (const Step* step : candidates) ++counts[levelOf(*step).value_or(0)];
+  std::map<int, int> strides;
+  int left = keep;
+  int levelsLeft = static_cast<int>(counts.size());
+  for (const auto& [level, count] : counts) {
+    const int quota = std::max(1, left / levelsLeft--);
+    strides[level] = (count + quota - 1) / quota;
+    left -= (count + strides[level] - 1) / strides[level];
+  }
+  return strides;
+}
+
+}  // namespace
+
 std::vector<Step> StepRecorder::keptSteps() const {
   std::vector<Step> steps = allSteps();
   const auto inRegion = [&](const Step& step) {
     return !budget_.region || touches(step, *budget_.region);
   };
-  const auto candidates = std::count_if(steps.begin(), steps.end(), inRegion);
-  const int every = budget_.every > 0
-                        ? budget_.every
-                        : std::max(1, static_cast<int>(std::ceil(static_cast<double>(candidates) /
-                                                                 StepBudget::kDefaultKeptSteps)));
+  std::vector<const Step*> candidates;
+  for (const Step& step : steps)
+    if (inRegion(step)) candidates.push_back(&step);
+  const bool byLevel = budget_.every == 0 && !candidates.empty() &&
+                       std::all_of(candidates.begin(), candidates.end(),
+                                   [](const Step* step) { return levelOf(*step).has_value(); });
+  const std::map<int, int> strides =
+      byLevel ? stridesByLevel(candidates, StepBudget::kDefaultKeptSteps)
+              : std::map<int, int>{
+                    {0, budget_.every > 0 ? budget_.every
+                                          : std::max(1, static_cast<int>(std::ceil(
+                                                            static_cast<double>(candidates.size()) /
+                                                            StepBudget::kDefaultKeptSteps)))}};
+  std::map<int, std::int64_t> seen;  // candidates met, by level
+  const auto keeps = [&](const Step& step) {
+    const int level = byLevel ? *levelOf(step) : 0;
+    return inRegion(step) && seen[level]++ % strides.at(level) == 0;
+  };
   std::vector<Step> kept;
   Step left;  // what the steps left out since the last kept one changed
   int skipped = 0;
-  std::int64_t candidate = 0;
+  StepTally tally;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     Step& step = steps[i];
+    tally.add(step);
     const bool last = i + 1 == steps.size();
-    const bool keep = (inRegion(step) && candidate++ % every == 0) || last;
+    const bool keep = keeps(step) || last;
     if (!keep) {
       append(left.writes, step.writes);
       append(left.settled, step.settled);
@@ -111,6 +168,7 @@ std::vector<Step> StepRecorder::keptSteps() const {
     step.writesBefore = std::move(left.writes);
     step.settledBefore = std::move(left.settled);
     step.skippedBefore = skipped;
+    step.soFar = tally;
     kept.push_back(std::move(step));
     left = {};
     skipped = 0;

@@ -60,6 +60,16 @@ struct StepTable {
   std::vector<std::vector<StepCell>> rows;
 };
 
+// What the steps up to one, and it, did: every step, kept or not.
+struct StepTally {
+  std::vector<std::pair<std::string, std::uint64_t>> kinds;  // steps of each kind, as met
+  std::uint64_t painted = 0;                                 // pixels set
+  std::uint64_t hidden = 0;   // pixels where a write lost a depth test
+  std::uint64_t settled = 0;  // pixels made final
+
+  void add(const struct Step& step);
+};
+
 struct Step {
   Step() = default;
   Step(std::string kind, std::string text) : kind(std::move(kind)), text(std::move(text)) {}
@@ -77,6 +87,7 @@ struct Step {
   // image as it stood: applied before this step's own.
   std::vector<PixelWrite> writesBefore;
   std::vector<PixelRect> settledBefore;
+  StepTally soFar;  // of a kept step: what it and every step before it did
 };
 
 // What a recorder keeps: the steps that touch `region` (all, when it is

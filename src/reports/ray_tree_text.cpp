@@ -5,6 +5,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/text.hpp"
 #include "reports/step_json.hpp"
 
 namespace rise {
@@ -65,7 +66,7 @@ void printRayTrees(std::ostream& out, const Scene& scene, const std::vector<RayT
                    const Color& pixelColor) {
   if (trees.empty()) return;
   out << "pixel " << trees[0].pixel.x << "," << trees[0].pixel.y << ": " << text(pixelColor)
-      << " from " << trees.size() << (trees.size() == 1 ? " sample\n" : " samples\n");
+      << " from " << counted(trees.size(), "sample") << "\n";
   for (const RayTree& tree : trees) {
     out << "sample " << tree.sample << " at " << text(tree.raster) << ": " << text(tree.color);
     if (tree.dimensions)

@@ -127,6 +127,12 @@ std::string stepJson(const Step& step, int index, const std::string& frame,
     shapes.push_back(
         {{"kind", shapeKindName(shape.kind)}, {"role", shape.role}, {"points", std::move(points)}});
   }
+  Json kinds = Json::object();
+  for (const auto& [kind, count] : step.soFar.kinds) kinds[kind] = count;
+  const Json soFar = {{"kinds", std::move(kinds)},
+                      {"painted", step.soFar.painted},
+                      {"hidden", step.soFar.hidden},
+                      {"settled", step.soFar.settled}};
   Json json = {{"index", index},
                {"kind", step.kind},
                {"text", step.text},
@@ -137,6 +143,7 @@ std::string stepJson(const Step& step, int index, const std::string& frame,
                {"painted", pixelRuns(step.writes, true)},
                {"hidden", pixelRuns(step.writes, false)},
                {"settled", std::move(settled)},
+               {"so_far", soFar},
                {"frame", frame}};
   if (!depthFrame.empty()) json["depth_frame"] = depthFrame;
   return json.dump();

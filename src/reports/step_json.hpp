@@ -12,6 +12,7 @@
 //                             "role", "points": [[x, y]]}],
 //                 "painted": [[y, x0, x1]], "hidden": [[y, x0, x1]],
 //                 "settled": [[x, y, w, h]],
+//                 "so_far": {"kinds": {kind: count}, "painted", "hidden", "settled"},
 //                 "frame": file, "depth_frame": file (when the step drew depths)}
 //   ray trees    {"rise": "ray-tree", "version": 1, "scene", "algorithm",
 //                 "pixel": [x, y], "color": [r, g, b], "samples": [tree]}
@@ -27,7 +28,9 @@
 // Raster coordinates run from (0, 0) at the image's top-left corner; pixel
 // (i, j) covers [i, i+1) x [j, j+1). "painted" and "hidden" are the runs of
 // pixels the step set and those where it lost a depth test, "settled" the
-// rectangles whose pixels it made final. Colours are linear.
+// rectangles whose pixels it made final; "so_far" counts what this step and
+// every step before it did, those not kept in the file included. Colours are
+// linear.
 #pragma once
 
 #include <optional>

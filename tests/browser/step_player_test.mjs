@@ -1,6 +1,7 @@
 // The step player as a teacher uses it, in headless Chromium (Debian's),
 // opened from its files: it loads without an error, steps forward and back,
-// plays and pauses, and after its last step shows the rendered image.
+// plays and pauses, and after its last step shows the rendered image and
+// counts every pixel final that every step, shown or not, made final.
 //
 //   node step_player_test.mjs PLAYER_FOLDER...
 import { chromium } from 'playwright-core';
@@ -61,6 +62,10 @@ async function testPlayer(page, folder) {
         Math.abs(shown[i + 2] - rendered[i + 2]) > 3) differing += 1;
   check(shown.length === rendered.length && differing === 0,
         `${name}: the last frame differs from the image at ${differing} pixels`);
+  // What the counts say at the end is of every step, shown or not.
+  const final = (await page.textContent('#sofar')).match(/(\d+) pixels final/);
+  check(!final || Number(final[1]) === rendered.length / 4,
+        `${name}: the last step says ${final && final[1]} pixels final of ${rendered.length / 4}`);
   await page.screenshot({ path: path.join(folder, 'player.png') });
   check(errors.length === 0, `${name}: page errors: ${errors.join('; ')}`);
 }
