@@ -15,8 +15,8 @@ void addCompareOptions(CLI::App& command, CompareOptions& options) {
   addSettingsOptions(command, options.settings);
   command.get_option("--shadows")
       ->description(
-          "Visible-surface algorithms' shadows: map (shadow maps, the default here), none, or "
-          "volume (shadow volumes, the scanline's alone: name it with --algorithms)");
+          "Visible-surface algorithms' shadows: shadow maps, shadow volumes (the scanline's "
+          "alone: name it with --algorithms) or none (default map)");
   command.add_option("-o,--output", options.directory,
                      "Folder to write into (default: the scene's name)");
   command

@@ -1,5 +1,6 @@
 #include "look_inside.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -161,8 +162,8 @@ std::function<std::optional<int>()> addLookInsideCommands(CLI::App& app) {
       "step, what the step did, the counts so far");
   addSettingsOptions(*explainCommand, explainOptions->settings);
   explainCommand
-      ->add_option("-a,--algorithm", explainOptions->algorithm,
-                   "Algorithm (default: " + explainOptions->algorithm + ")")
+      ->add_option("-a,--algorithm", explainOptions->algorithm, "Algorithm (see `rise algorithms`)")
+      ->capture_default_str()
       ->check(CLI::IsMember(algorithmNames()));
   explainCommand->add_option("-o,--output", explainOptions->directory,
                              "Folder to write the page into (default: the scene's name)");
@@ -185,14 +186,21 @@ std::function<std::optional<int>()> addLookInsideCommands(CLI::App& app) {
       "inspect", "Print the tree of rays behind one pixel, and write it as JSON and a picture");
   addSettingsOptions(*inspectCommand, inspectOptions->settings);
   inspectCommand->add_option("--pixel", inspectOptions->pixel, "The pixel: X,Y from the top left")
+      ->option_text("X,Y")
       ->delimiter(',')
       ->expected(2)
       ->required();
   inspectCommand
-      ->add_option("-a,--algorithm", inspectOptions->algorithm,
-                   "Algorithm: " + joined(treeAlgorithmNames()) +
-                       " (default: " + inspectOptions->algorithm + ")")
-      ->check(CLI::IsMember(algorithmNames()));
+      ->add_option("-a,--algorithm", inspectOptions->algorithm, "Algorithm, one that traces rays")
+      ->capture_default_str()
+      // Any algorithm's name is taken, so that one without rays is told why.
+      ->check(CLI::Validator(
+          [](const std::string& name) -> std::string {
+            const std::vector<std::string> all = algorithmNames();
+            if (std::find(all.begin(), all.end(), name) != all.end()) return {};
+            return name + "; expected one of: " + joined(treeAlgorithmNames());
+          },
+          "{" + joined(treeAlgorithmNames()) + "}"));
   inspectCommand->add_option("-o,--output", inspectOptions->json, "Also write the tree as JSON");
   inspectCommand->add_option(
       "--picture", inspectOptions->picture,

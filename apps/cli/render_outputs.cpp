@@ -63,8 +63,7 @@ void addRenderOutputOptions(CLI::App& command, RenderOutputOptions& options) {
   command
       .add_option("--aov", options.buffers,
                   "Auxiliary buffers to write beside the image (`rise algorithms` lists each "
-                  "algorithm's): " +
-                      joined(bufferNames()))
+                  "algorithm's)")
       ->delimiter(',')
       ->check(CLI::IsMember(bufferNames()));
 }

@@ -15,6 +15,7 @@
 #include "animation.hpp"
 #include "compare.hpp"
 #include "core/text.hpp"
+#include "help_in_words.hpp"
 #include "job.hpp"
 #include "look_inside.hpp"
 #include "manual_command.hpp"
@@ -167,6 +168,11 @@ void listAlgorithms() {
 
 CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
   CLI::App* command = app.add_subcommand("render", "Render a scene file to an image");
+  command->footer(
+      "Examples:\n"
+      "  rise render examples/classic.yaml -a z-buffer --width 320 -o z.png\n"
+      "  rise render examples/spheres.yaml --samples 16 --aov depth,cost --stats stats.json -o "
+      "s.png");
   addSettingsOptions(*command, options.settings);
   addTileOption(*command, options.settings);
   addAnimationOptions(*command, options.animation);
@@ -193,7 +199,16 @@ CLI::App* addCompareCommand(CLI::App& app, CompareOptions& options) {
 
 int run(int argc, char** argv) {
   CLI::App app{"RISE, the Realistic Image Synthesis Environment", "rise"};
+  app.formatter(std::make_shared<HelpInWords>());
+  app.set_version_flag("--version", "rise " RISE_VERSION);
   app.require_subcommand(1);
+  app.footer(
+      "Examples:\n"
+      "  rise render examples/classic.yaml -o classic.png       Whitted's ray tracer\n"
+      "  rise render examples/classic.yaml -a scanline -o s.png  another algorithm\n"
+      "  rise compare examples/classic.yaml -o compared          every algorithm, side by side\n"
+      "  rise explain examples/classic.yaml -a area-subdivision  its steps, as a page to play\n"
+      "Each command's options: rise COMMAND --help. The manual: rise manual");
 
   RenderOptions renderOptions;
   const CLI::App* renderCommand = addRenderCommand(app, renderOptions);

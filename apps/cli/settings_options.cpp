@@ -60,8 +60,8 @@ CLI::Validator choicesNamedBy(const Enum (&all)[Count], Name name) {
 void addShadowOptions(CLI::App& command, RenderSettings& settings) {
   command
       .add_option("--shadows", settings.shadows,
-                  "Visible-surface algorithms' shadows: none (default), map (shadow maps) or "
-                  "volume (shadow volumes, the scanline's)")
+                  "Visible-surface algorithms' shadows: shadow maps, shadow volumes (the "
+                  "scanline's) or none (default none)")
       ->transform(choicesNamedBy(kAllShadowMethods, shadowMethodName));
   command.add_option("--shadow-map-size", settings.shadowMapSize, "Shadow maps: texels a side")
       ->capture_default_str()
@@ -100,15 +100,13 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
       .add_option("--samples", image.samples,
                   "Samples a pixel (default: the scene's, or 1); alone, picks jittered")
       ->check(wholeNumberFrom(1, kMostSamples));
-  command
-      .add_option("--pattern", image.pattern,
-                  "Where the samples go: none, regular, jittered, random or adaptive")
+  command.add_option("--pattern", image.pattern, "Where the samples go in a pixel")
       ->transform(choices<SamplePattern>({{"none", SamplePattern::None},
                                           {"regular", SamplePattern::Regular},
                                           {"jittered", SamplePattern::Jittered},
                                           {"random", SamplePattern::Random},
                                           {"adaptive", SamplePattern::Adaptive}}));
-  command.add_option("--filter", image.filter, "Reconstruction filter: box, tent or gaussian")
+  command.add_option("--filter", image.filter, "Reconstruction filter")
       ->transform(choices<FilterKind>({{"box", FilterKind::Box},
                                        {"tent", FilterKind::Tent},
                                        {"gaussian", FilterKind::Gaussian}}));
@@ -122,11 +120,11 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
       ->check(wholeNumberFrom<std::uint64_t>(0, std::numeric_limits<std::uint64_t>::max()));
   command
       .add_option("--accel", settings.accel,
-                  "Acceleration structure: none, spheres, bvh (default) or embree")
+                  "Acceleration structure of the ray tracers (default bvh)")
       ->transform(choicesNamedBy(kAllAccels, accelName));
   command
       .add_option("--shading", settings.shading,
-                  "Visible-surface algorithms: flat, gouraud or phong (default)")
+                  "Visible-surface algorithms' shading (default phong)")
       ->transform(choices<Shading>(
           {{"flat", Shading::Flat}, {"gouraud", Shading::Gouraud}, {"phong", Shading::Phong}}));
   command.add_flag("--no-cull{false}", settings.backfaceCulling,
@@ -144,8 +142,8 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
   addShadowOptions(command, settings);
   command
       .add_option("--transparency", settings.transparency,
-                  "z-buffer: transparent surfaces sorted back to front (default) or by the "
-                  "a-buffer's fragment lists")
+                  "z-buffer: transparent surfaces sorted back to front or by the a-buffer's "
+                  "fragment lists (default sorted)")
       ->transform(choicesNamedBy(kAllTransparencies, transparencyName));
 }
 

@@ -223,6 +223,7 @@ void addTileOption(CLI::App& command, SettingsOptions& options) {
           },
           "Render only this region, X,Y,W,H, and write its place beside the image (for rise "
           "merge)")
+      ->option_text("X,Y,W,H")
       ->delimiter(',')
       ->expected(4)
       ->check(wholeNumberFrom(0, kLargestImageSide));
