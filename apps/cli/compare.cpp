@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "algorithms/registry.hpp"
+#include "algorithms/settings_for_scene.hpp"
 #include "job.hpp"
 
 namespace rise::cli {
@@ -11,7 +12,7 @@ namespace rise::cli {
 void addCompareOptions(CLI::App& command, CompareOptions& options) {
   // A comparison sets each family at its best: the visible-surface
   // algorithms draw shadows, by the method all of them have.
-  options.settings.request.settings.shadows = ShadowMethod::Map;
+  options.settings.request.settings.shadows = kComparedShadows;
   addSettingsOptions(command, options.settings);
   command.get_option("--shadows")
       ->description(

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "algorithms/registry.hpp"
+#include "algorithms/settings_for_scene.hpp"
 #include "core/text.hpp"
 #include "studio.hpp"
 
@@ -34,8 +35,9 @@ void Studio::startComparison(const std::vector<std::string>& algorithms) {
     note("choose the algorithms to compare");
     return;
   }
-  const std::optional<RenderSettings> settings = settingsToRender();
+  std::optional<RenderSettings> settings = settingsToRender();
   if (!settings) return;
+  if (comparison_.comparedShadows) settings->shadows = kComparedShadows;
   comparison_.job.reset();
   comparison_.renders.clear();
   comparison_.textures.clear();
@@ -87,17 +89,26 @@ void Studio::drawComparePanel() {
   ImGui::SetNextWindowPos({400, 460}, ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize({560, 520}, ImGuiCond_FirstUseEver);
   ImGui::Begin("Compare");
-  for (const Renderer* renderer : allRenderers()) {
-    const std::string name(renderer->name());
+  const std::span<const Renderer* const> renderers = allRenderers();
+  const float rightEdge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  const ImGuiStyle& style = ImGui::GetStyle();
+  for (std::size_t i = 0; i < renderers.size(); ++i) {
+    const std::string name(renderers[i]->name());
     bool chosen = std::ranges::find(comparison_.chosen, name) != comparison_.chosen.end();
     if (ImGui::Checkbox(name.c_str(), &chosen)) {
       std::erase(comparison_.chosen, name);
       if (chosen) comparison_.chosen.push_back(name);
     }
     track("compare/" + name);
-    ImGui::SameLine();
+    // The next box on this line where it fits whole, else on the next line.
+    if (i + 1 == renderers.size()) break;
+    const float nextWidth = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x +
+                            ImGui::CalcTextSize(std::string(renderers[i + 1]->name()).c_str()).x;
+    if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + nextWidth <= rightEdge) ImGui::SameLine();
   }
-  ImGui::NewLine();
+  ImGui::Checkbox("Shadow maps for the visible-surface algorithms, as rise compare draws them",
+                  &comparison_.comparedShadows);
+  track("compare/shadows");
   ImGui::BeginDisabled(!session_.scene() || comparison_.job != nullptr);
   if (ImGui::Button("Compare")) {
     std::vector<std::string> inOrder;  // the registry's order, as `rise compare` renders them

@@ -76,6 +76,9 @@ struct PixelInspection {
 // The compare panel: the algorithms chosen, rendered one after the other.
 struct Comparison {
   std::vector<std::string> chosen;
+  // The visible-surface algorithms draw shadow maps, as `rise compare` has
+  // them; unticked, the shadows of the Render panel.
+  bool comparedShadows = true;
   std::vector<std::string> pending;
   std::unique_ptr<RenderJob> job;
   std::vector<ComparedRender> renders;

@@ -45,4 +45,9 @@ class SettingsError : public std::runtime_error {
 // Throws SettingsError.
 RenderSettings settingsFor(const Scene& scene, const RenderRequest& request = {});
 
+// The shadows of a comparison, `rise compare`'s and the studio's alike: each
+// family at its best, the visible-surface algorithms with the shadows all of
+// them draw.
+inline constexpr ShadowMethod kComparedShadows = ShadowMethod::Map;
+
 }  // namespace rise

@@ -1,6 +1,7 @@
 #include "raster/visible_surface_renderer.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <optional>
 #include <string>
 #include <utility>
@@ -315,8 +316,11 @@ RenderResult VisibleSurfaceRenderer::renderProjected(
   const ViewProjection view(ViewFrame(scene.camera, settings.width, settings.height),
                             pass.pixelOffset, pass.lens);
   std::optional<ShadowMaps> shadowMaps;
+  const auto shadowMapsStart = std::chrono::steady_clock::now();
   if (settings.shadows == ShadowMethod::Map)
     shadowMaps.emplace(scene, tessellated, shadowMapSettings(settings), workers);
+  const std::chrono::duration<double> shadowMapTime =
+      std::chrono::steady_clock::now() - shadowMapsStart;
   std::optional<ShadowVolumes> shadowVolumes;
   if (settings.shadows == ShadowMethod::Volume && description().draws(ShadowMethod::Volume))
     shadowVolumes.emplace(scene, tessellated, view, workers);
@@ -336,6 +340,7 @@ RenderResult VisibleSurfaceRenderer::renderProjected(
   RenderResult result = frame.takeResult();
   if (shadowMaps) {
     shadowMaps->addStats(stats);
+    stats.add("shadow_map_seconds", shadowMapTime.count());
     result.buffers["shadow-map"] = shadowMaps->picture();
   }
   if (shadowVolumes) shadowVolumes->addStats(stats);

@@ -11,6 +11,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/byte_encoding.hpp"
+#include "reports/counter_glossary.hpp"
 
 namespace rise {
 namespace {
@@ -109,6 +110,49 @@ std::string timeChart(const std::vector<ComparedRender>& renders) {
   return out.str();
 }
 
+// "ray-tracing" -> "ray_tracing", as counters are named.
+std::string counterWord(std::string_view name) {
+  std::string word(name);
+  std::replace(word.begin(), word.end(), '-', '_');
+  return word;
+}
+
+// The shadows an image has, as its caption says, and what they took.
+std::string shadowsOf(const ComparedRender& render) {
+  const Stats& stats = render.result.stats;
+  if (render.algorithm->family != Family::VisibleSurface) return "shadows by shadow rays";
+  if (findValue(stats, "shadow_map_texels"))
+    return "shadows by shadow maps, drawn in " + formatNumber(stats.value("shadow_map_seconds")) +
+           " s of the " + formatNumber(stats.value("render_seconds")) + " s";
+  if (findValue(stats, "shadow_volume_faces")) return "shadows by shadow volumes";
+  return "no shadows (--shadows map or volume draws them)";
+}
+
+// Why a render slower than the algorithm it draws the image of is so, from
+// their counters, or nothing where it is faster.
+std::string whySlower(const ComparedRender& render, const std::vector<ComparedRender>& renders) {
+  const std::string other(render.algorithm->sameImageAs);
+  const auto reference = std::find_if(renders.begin(), renders.end(), [&](const auto& candidate) {
+    return !other.empty() && candidate.algorithm->name == other;
+  });
+  const Stats& ours = render.result.stats;
+  const double* speedup = findValue(ours, "speedup_over_" + counterWord(other));
+  if (reference == renders.end() || !speedup || *speedup >= 1.0) return "";
+  const Stats& theirs = reference->result.stats;
+  const double spared = ours.value("primary_rays_from_item_buffer");
+  const double theirRays = theirs.value("rays");
+  const double sparedSeconds =
+      theirRays > 0.0 ? theirs.value("render_seconds") * spared / theirRays : 0.0;
+  return "Slower than " + other + " here (" + formatNumber(*speedup) +
+         " times its speed): its item buffer took " +
+         formatNumber(ours.value("item_buffer_seconds")) + " s, and the " + formatNumber(spared) +
+         " primary rays it spared would have taken " + other + " about " +
+         formatNumber(sparedSeconds) + " s, as its acceleration structure finds a first hit in " +
+         formatNumber(theirs.value("intersection_tests_per_ray")) +
+         " tests a ray on this scene. The item buffer pays where first hits are dear: many "
+         "objects, no acceleration (--accel none), large images.";
+}
+
 std::string html(const std::string& sceneName, const std::vector<ComparedRender>& renders,
                  const std::vector<std::string>& names) {
   std::ostringstream out;
@@ -118,23 +162,29 @@ std::string html(const std::string& sceneName, const std::vector<ComparedRender>
          ".images{display:flex;flex-wrap:wrap;gap:1em}figure{margin:0}"
          "figcaption{font-size:90%;max-width:320px}img{max-width:320px;image-rendering:pixelated}"
          "table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;"
-         "padding:2px 8px}td{text-align:right}</style></head><body>\n<h1>"
+         "padding:2px 8px}td{text-align:right}td.meaning{text-align:left;font-size:90%}"
+         ".slower{color:#8a4b00}</style></head><body>\n<h1>"
       << escapeHtml(sceneName) << "</h1>\n<div class=\"images\">\n";
   for (const ComparedRender& render : renders) {
     out << "<figure><a href=\"" << escapeHtml(std::string(render.algorithm->name))
         << ".png\"><img src=\"" << escapeHtml(std::string(render.algorithm->name))
         << ".png\" alt=\"" << escapeHtml(std::string(render.algorithm->name))
         << "\"></a><figcaption><b>" << escapeHtml(std::string(render.algorithm->name))
-        << "</b>: " << escapeHtml(std::string(render.algorithm->summary))
-        << "</figcaption></figure>\n";
+        << "</b>: " << escapeHtml(std::string(render.algorithm->summary)) << "<br><i>"
+        << escapeHtml(shadowsOf(render)) << "</i>";
+    if (const std::string why = whySlower(render, renders); !why.empty())
+      out << "<br><span class=\"slower\">" << escapeHtml(why) << "</span>";
+    out << "</figcaption></figure>\n";
   }
   out << "</div>\n<h2>Render time</h2>\n"
-      << timeChart(renders) << "<h2>Counters</h2>\n<table><tr><th></th>";
+      << timeChart(renders) << "<h2>Counters</h2>\n<table><tr><th></th><th>what it counts</th>";
   for (const ComparedRender& render : renders)
     out << "<th>" << escapeHtml(std::string(render.algorithm->name)) << "</th>";
   out << "</tr>\n";
   for (const std::string& name : names) {
-    out << "<tr><th>" << escapeHtml(name) << "</th>";
+    const std::string meaning(counterMeaning(name).value_or(""));
+    out << "<tr><th title=\"" << escapeHtml(meaning) << "\">" << escapeHtml(name)
+        << "</th><td class=\"meaning\">" << escapeHtml(meaning) << "</td>";
     for (const ComparedRender& render : renders)
       out << "<td>" << statisticCell(render.result.stats, name) << "</td>";
     out << "</tr>\n";
@@ -155,13 +205,6 @@ int pixelsDiffering(const Image& a, const Image& b, Encoding encoding) {
     }
   }
   return differing;
-}
-
-// "ray-tracing" -> "ray_tracing", as counters are named.
-std::string counterWord(std::string_view name) {
-  std::string word(name);
-  std::replace(word.begin(), word.end(), '-', '_');
-  return word;
 }
 
 }  // namespace
@@ -222,8 +265,10 @@ std::vector<std::filesystem::path> writeComparison(const std::filesystem::path& 
   for (std::size_t i = 0; i < renders.size(); ++i)
     writeImage(renders[i].result.image, files[i], encoding);
   const std::vector<std::string> names = statisticNames(renders);
-  const std::string reports[] = {csv(renders, names), markdown(sceneName, renders, names),
-                                 html(sceneName, renders, names)};
+  // Titled by the scene's file, not by where it lies.
+  const std::string title = std::filesystem::path(sceneName).filename().string();
+  const std::string reports[] = {csv(renders, names), markdown(title, renders, names),
+                                 html(title, renders, names)};
   for (std::size_t i = 0; i < std::size(reports); ++i)
     writeFileAtomically(files[renders.size() + i], reports[i]);
   return files;

@@ -75,7 +75,15 @@ def commands_of(rise):
     """The commands `rise --help` lists under "Subcommands:", one a line."""
     help_text = subprocess.run([rise, "--help"], capture_output=True, text=True, check=True).stdout
     listed = help_text.split("Subcommands:", 1)[1] if "Subcommands:" in help_text else ""
-    return [line.split()[0] for line in listed.splitlines() if line.strip()]
+    # The list ends at the first line that is not indented (the examples after it).
+    commands = []
+    for line in listed.splitlines():
+        if not line.strip():
+            continue
+        if not line.startswith(" "):
+            break
+        commands.append(line.split()[0])
+    return commands
 
 
 def check_command_reference(pages, rise):

@@ -1,0 +1,131 @@
+// What the comparison page says is true and complete: every counter any
+// algorithm reports is told in words beside it; the page is titled by the
+// scene's file; each picture's caption says which shadows it has, and what
+// the shadow maps took; and where the hybrid is slower than the ray tracer
+// whose image it draws, the page says why, from their counters.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "algorithms/registry.hpp"
+#include "algorithms/settings_for_scene.hpp"
+#include "io/scene_file.hpp"
+#include "reports/comparison_report.hpp"
+#include "reports/counter_glossary.hpp"
+#include "support/example_testing.hpp"
+#include "support/temporary_folder_testing.hpp"
+
+namespace rise {
+namespace {
+
+using example_testing::exampleScenes;
+
+Scene load(const std::string& name) {
+  return loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/" + name);
+}
+
+RenderSettings smallSettings(const Scene& scene) {
+  RenderRequest request;
+  request.image.width = 40;
+  request.image.height = 30;
+  request.settings.shadows = kComparedShadows;
+  request.settings.shadowMapSize = 64;
+  request.image.samples = 1;
+  return settingsFor(scene, request);
+}
+
+std::vector<ComparedRender> compared(const Scene& scene, const RenderSettings& settings) {
+  std::vector<ComparedRender> renders;
+  for (const Renderer* renderer : allRenderers()) {
+    RenderObserver observer;
+    renders.push_back({&renderer->description(), renderer->render(scene, settings, observer)});
+  }
+  addSameImageCounters(renders, Encoding::Srgb);
+  return renders;
+}
+
+TEST(ComparisonPage, EveryCounterIsToldInWords) {
+  std::set<std::string> untold;
+  for (const std::string& name : exampleScenes()) {
+    const Scene scene = load(name);
+    RenderSettings settings = smallSettings(scene);
+    for (const ShadowMethod shadows : {ShadowMethod::Map, ShadowMethod::Volume}) {
+      settings.shadows = shadows;
+      settings.transparency =
+          shadows == ShadowMethod::Volume ? Transparency::ABuffer : Transparency::Sorted;
+      for (const std::string& counter : statisticNames(compared(scene, settings)))
+        if (!counterMeaning(counter)) untold.insert(counter);
+    }
+  }
+  EXPECT_TRUE(untold.empty()) << "counters with no line in reports/counter_glossary.cpp: " << [&] {
+    std::string all;
+    for (const std::string& name : untold) all += name + " ";
+    return all;
+  }();
+}
+
+class ComparisonPageFiles : public TemporaryFolderTest {
+ protected:
+  std::string page(const std::vector<ComparedRender>& renders, const std::string& scene) {
+    writeComparison(directory_, scene, renders, Encoding::Srgb);
+    std::ifstream file(directory_ / "index.html");
+    return {std::istreambuf_iterator<char>(file), {}};
+  }
+};
+
+TEST_F(ComparisonPageFiles, IsTitledByTheSceneAndSaysEachPicturesShadows) {
+  const std::string path = std::string(RISE_SOURCE_DIR) + "/examples/classic.yaml";
+  const Scene scene = load("classic.yaml");
+  const std::string html = page(compared(scene, smallSettings(scene)), path);
+  EXPECT_NE(html.find("<title>RISE: classic.yaml</title>"), std::string::npos);
+  EXPECT_EQ(html.find(std::string(RISE_SOURCE_DIR)), std::string::npos);
+  std::size_t maps = 0, rays = 0;
+  for (std::size_t at = html.find("shadows by shadow maps, drawn in "); at != std::string::npos;
+       at = html.find("shadows by shadow maps, drawn in ", at + 1))
+    ++maps;
+  for (std::size_t at = html.find("shadows by shadow rays"); at != std::string::npos;
+       at = html.find("shadows by shadow rays", at + 1))
+    ++rays;
+  EXPECT_EQ(maps, 4u);
+  EXPECT_EQ(rays, 3u);
+  EXPECT_NE(html.find("<td class=\"meaning\">rays traced, of every kind</td>"), std::string::npos);
+  EXPECT_EQ(html.find("<td class=\"meaning\"></td>"), std::string::npos);
+}
+
+TEST_F(ComparisonPageFiles, SaysWhyTheHybridIsSlowerWhereItIs) {
+  const auto stats = [](std::initializer_list<std::pair<const char*, double>> values) {
+    Stats result;
+    for (const auto& [name, value] : values) result.add(name, value);
+    return result;
+  };
+  std::vector<ComparedRender> renders = {{&findRenderer("ray-tracing")->description(),
+                                          {Image(2, 2),
+                                           {},
+                                           stats({{"render_seconds", 0.1},
+                                                  {"rays", 1000},
+                                                  {"intersection_tests", 6700},
+                                                  {"intersection_tests_per_ray", 6.7}})}},
+                                         {&findRenderer("hybrid")->description(),
+                                          {Image(2, 2),
+                                           {},
+                                           stats({{"render_seconds", 0.125},
+                                                  {"intersection_tests", 3000},
+                                                  {"primary_rays_from_item_buffer", 500},
+                                                  {"item_buffer_seconds", 0.06}})}}};
+  addSameImageCounters(renders, Encoding::Srgb);
+  const std::string html = page(renders, "s.yaml");
+  EXPECT_NE(html.find("Slower than ray-tracing here (0.8 times its speed): its item buffer took "
+                      "0.06 s, and the 500 primary rays it spared would have taken ray-tracing "
+                      "about 0.05 s"),
+            std::string::npos)
+      << html;
+  renders[1].result.stats = stats({{"render_seconds", 0.05}});
+  addSameImageCounters(renders, Encoding::Srgb);
+  EXPECT_EQ(page(renders, "s.yaml").find("Slower than"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace rise
