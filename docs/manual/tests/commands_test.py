@@ -5,12 +5,15 @@ reading order) and, page by page, in a fresh folder laid out like the top of
 the repository (`build/rise` the program under test): writes each named
 scene where the page writes it, checks that each scene loads (`rise
 validate`, or fails to with the status the page gives), and runs each block
-of commands, checking the status it ends with.
+of commands, checking the status it ends with; and where the prose quotes
+what a command prints ("``sphere at line 25``"), that a command of the page
+printed it.
 
     commands_test.py --manifest build/manual/manifest-en.json --rise build/rise
 """
 
 import json
+import re
 import subprocess
 import sys
 import tempfile
@@ -45,10 +48,27 @@ def check_scene(block, folder):
     return run_block("build/rise validate -", folder, stdin=block["text"]), "an unnamed scene"
 
 
+# What the prose quotes of a command's output, in a form that must then be
+# found in it: "``sphere at line 25``".
+QUOTED_OUTPUT = re.compile(r"``(\w+ at line \d+)``")
+
+
+def check_quotes(page, repository, printed):
+    """The page's quotes of output that none of its commands printed."""
+    # Lines joined, as a quote may be broken across two.
+    text = " ".join((Path(repository) / "docs" / "manual" / f"{page}.rst").read_text().split())
+    return [
+        f"{page}.rst: quotes ``{quote}``, which no command of the page prints"
+        for quote in QUOTED_OUTPUT.findall(text)
+        if quote not in printed
+    ]
+
+
 def check_page(page, blocks, repository, rise, root):
     folder = root / page.replace("/", "-")
     make_workspace(repository, rise, folder)
     failures, passed = [], 0
+    printed = ""
     for block in blocks:
         if block["kind"] == "scene":
             completed, what = check_scene(block, folder)
@@ -58,6 +78,7 @@ def check_page(page, blocks, repository, rise, root):
             print(f"  {page}:{block['line']}: {time.monotonic() - started:.1f} s")
         else:
             continue
+        printed += completed.stdout + completed.stderr
         if completed.returncode == block["status"]:
             passed += 1
             continue
@@ -65,6 +86,7 @@ def check_page(page, blocks, repository, rise, root):
             f"{page}.rst:{block['line']}: {what!r} exited with status {completed.returncode}, "
             f"the manual says {block['status']}:\n{completed.stdout}{completed.stderr}"
         )
+    failures += check_quotes(page, repository, printed)
     return passed, failures
 
 
