@@ -38,6 +38,7 @@ void Studio::startComparison(const std::vector<std::string>& algorithms) {
   std::optional<RenderSettings> settings = settingsToRender();
   if (!settings) return;
   if (comparison_.comparedShadows) settings->shadows = kComparedShadows;
+  comparison_.scene = session_.scene();
   comparison_.job.reset();
   comparison_.renders.clear();
   comparison_.textures.clear();
@@ -81,8 +82,7 @@ bool Studio::writeComparisonPage(const std::filesystem::path& directory) {
     note(error.what());
     return false;
   }
-  note("wrote " + (directory / "index.html").string());
-  return true;
+  return wrote(directory / "index.html");
 }
 
 void Studio::drawComparePanel() {
@@ -130,8 +130,13 @@ void Studio::drawComparePanel() {
     ImGui::SameLine();
     if (ImGui::Button("Write page..."))
       browser_.show(FileBrowser::Purpose::Folder, "Write the comparison into a folder",
-                    session_.path().parent_path(),
+                    outputFolder() / "comparison",
                     [this](const auto& path) { writeComparisonPage(path); });
+    if (comparison_.scene != session_.scene() && !comparison_.job) {
+      ImGui::TextColored({1.0f, 0.6f, 0.2f, 1.0f},
+                         "Out of date: the scene has changed since; Compare again.");
+      track("compare/out of date");
+    }
     const int count = static_cast<int>(comparison_.renders.size());
     const float width = (ImGui::GetContentRegionAvail().x - 8.0f * (count - 1)) / count;
     const float height = std::max(120.0f, ImGui::GetContentRegionAvail().y * 0.5f);

@@ -5,12 +5,13 @@
 // viewport.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "algorithms/registry.hpp"
 #include "core/text.hpp"
+#include "io/atomic_file.hpp"
 #include "reports/colours.hpp"
 #include "reports/ray_tree_text.hpp"
 #include "studio.hpp"
@@ -171,14 +172,20 @@ void Studio::drawSteps() {
   if (step && step->skippedBefore > 0)
     ImGui::TextDisabled("(%d steps before it not kept)", step->skippedBefore);
   const float side = ImGui::GetContentRegionAvail().x * 0.4f;
-  ImGui::BeginChild("step details", {side, 0}, true);
+  ImGui::BeginChild("step details", {side, 0}, true, ImGuiWindowFlags_HorizontalScrollbar);
   if (step) {
     for (const auto& [name, value] : step->values) ImGui::Text("%s: %g", name.c_str(), value);
     for (const StepTable& table : step->tables) {
       ImGui::TextUnformatted(table.title.c_str());
       if (table.columns.empty() ||
-          !ImGui::BeginTable(table.title.c_str(), static_cast<int>(table.columns.size()),
-                             ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit))
+          // Columns as wide as their cells, scrolled sideways where the
+          // panel is narrower, never cut.
+          !ImGui::BeginTable(
+              table.title.c_str(), static_cast<int>(table.columns.size()),
+              ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |
+                  ImGuiTableFlags_ScrollY,
+              {0.0f, ImGui::GetTextLineHeightWithSpacing() *
+                         static_cast<float>(std::min<std::size_t>(table.rows.size(), 12) + 3)}))
         continue;
       for (const std::string& column : table.columns) ImGui::TableSetupColumn(column.c_str());
       ImGui::TableHeadersRow();
@@ -217,11 +224,15 @@ void Studio::drawRayNode(const RayTree& tree, int ray) {
 }
 
 bool Studio::saveRayTree(const std::filesystem::path& path) {
-  std::ofstream file(path);
-  printRayTrees(file, *inspection_.scene, inspection_.trees, inspection_.pixelColor);
-  file.close();
-  if (!file) note(path.string() + ": cannot write");
-  return static_cast<bool>(file);
+  std::ostringstream text;
+  printRayTrees(text, *inspection_.scene, inspection_.trees, inspection_.pixelColor);
+  try {
+    writeFileAtomically(path, text.str());
+  } catch (const std::exception& error) {
+    note(error.what());
+    return false;
+  }
+  return wrote(path);
 }
 
 void Studio::drawRayTreePanel() {
@@ -232,6 +243,12 @@ void Studio::drawRayTreePanel() {
   const int samples = static_cast<int>(inspection_.trees.size());
   ImGui::Text("%s, pixel %d, %d", inspection_.algorithm.c_str(), inspection_.pixel.x,
               inspection_.pixel.y);
+  if (inspection_.scene != session_.scene()) {
+    ImGui::TextColored({1.0f, 0.6f, 0.2f, 1.0f},
+                       "Out of date: the scene has changed since this pixel was traced; render "
+                       "and click it again.");
+    track("ray tree/out of date");
+  }
   if (samples > 1) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(160);

@@ -50,20 +50,20 @@ void Studio::drawMenuBar() {
       ImGui::Separator();
       if (ImGui::MenuItem("Save image...", nullptr, false, render_.result.has_value()))
         browser_.show(FileBrowser::Purpose::Save, "Save the rendered image (.png, .ppm, .exr)",
-                      here.parent_path() / "render.png",
-                      [this](const auto& path) { saveImage(path); });
+                      outputFolder() / "render.png", [this](const auto& path) { saveImage(path); });
       if (ImGui::MenuItem("Save buffer...", nullptr, false, !render_.buffer.empty()))
         browser_.show(
             FileBrowser::Purpose::Save, "Save the " + render_.buffer + " buffer",
-            here.parent_path() / ("render." + render_.buffer + ".png"),
+            outputFolder() / ("render." + render_.buffer + ".png"),
             [this, buffer = render_.buffer](const auto& path) { saveBuffer(buffer, path); });
       if (ImGui::MenuItem("Save ray tree...", nullptr, false, !inspection_.trees.empty()))
         browser_.show(FileBrowser::Purpose::Save, "Save the pixel's ray trees as text",
-                      here.parent_path() / "ray-tree.txt",
+                      outputFolder() / "ray-tree.txt",
                       [this](const auto& path) { saveRayTree(path); });
       if (ImGui::MenuItem("Write comparison page...", nullptr, false, !comparison_.renders.empty()))
         browser_.show(FileBrowser::Purpose::Folder, "Write the comparison into a folder",
-                      here.parent_path(), [this](const auto& path) { writeComparisonPage(path); });
+                      outputFolder() / "comparison",
+                      [this](const auto& path) { writeComparisonPage(path); });
       ImGui::Separator();
       if (ImGui::MenuItem("Quit")) askBeforeLeaving([this] { quit_ = true; });
       ImGui::EndMenu();

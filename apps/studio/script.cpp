@@ -240,6 +240,10 @@ bool Script::run(const Command& command, Studio& studio, const Image& screenshot
     if (!problem || problem->message.find(command.rest) == std::string::npos)
       fail(command, "expected a refusal saying '" + command.rest + "'; the studio says: " +
                         (problem ? problem->message : "nothing was refused"));
+  } else if (name == "expect-status") {
+    if (studio.status().find(command.rest) == std::string::npos)
+      fail(command,
+           "expected the status bar to say '" + command.rest + "'; it says: " + studio.status());
   } else if (name == "expect-value" && needWords(2)) {
     const SceneDocument* document = studio.session().document();
     const std::string expected = trimmed(command.rest.substr(command.words[0].size()));

@@ -28,6 +28,7 @@
 //   screenshot FILE            the window as it is now, as PNG
 //   layout FILE                where each named widget is: "NAME X0 Y0 X1 Y1"
 //   expect-refused TEXT        the last edit was refused, saying TEXT
+//   expect-status TEXT         the status bar says TEXT
 //   expect-value PATH VALUE    the scene's PATH holds VALUE
 //   expect-problem LINE COLUMN the text does not load, for a problem there
 //   expect-frames SECONDS GAP  for SECONDS while rendering, no frame takes

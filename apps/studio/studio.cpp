@@ -229,8 +229,7 @@ bool Studio::saveImage(const std::filesystem::path& path) {
     note(error.what());
     return false;
   }
-  note("wrote " + path.string());
-  return true;
+  return wrote(path);
 }
 
 bool Studio::saveBuffer(const std::string& buffer, const std::filesystem::path& path) {
@@ -248,8 +247,7 @@ bool Studio::saveBuffer(const std::string& buffer, const std::filesystem::path& 
     note(error.what());
     return false;
   }
-  note("wrote " + path.string());
-  return true;
+  return wrote(path);
 }
 
 void Studio::drawStatusBar() {

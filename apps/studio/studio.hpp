@@ -79,6 +79,7 @@ struct Comparison {
   // The visible-surface algorithms draw shadow maps, as `rise compare` has
   // them; unticked, the shadows of the Render panel.
   bool comparedShadows = true;
+  std::shared_ptr<const Scene> scene;  // the scene it was rendered from
   std::vector<std::string> pending;
   std::unique_ptr<RenderJob> job;
   std::vector<ComparedRender> renders;
@@ -176,6 +177,16 @@ class Studio {
   void askBeforeLeaving(std::function<void()> then);
   void track(const std::string& name);
   void note(std::string message) { status_ = std::move(message); }
+  // Where a file the studio writes is offered first: the folder of the
+  // last one written, at first the folder the studio was started in (not
+  // the scene's: the examples are the repository's).
+  std::filesystem::path outputFolder() const { return outputFolder_; }
+  // Says that `file` was written, and offers its folder next; true.
+  bool wrote(const std::filesystem::path& file) {
+    outputFolder_ = file.parent_path();
+    note("wrote " + file.string());
+    return true;
+  }
   std::shared_ptr<const Scene> sceneOrNull() const { return session_.scene(); }
 
   Session session_;
@@ -206,6 +217,7 @@ class Studio {
   Viewport viewport_;
   bool showHelp_ = false;
   std::string status_;
+  std::filesystem::path outputFolder_ = std::filesystem::current_path();
   std::map<std::string, ImVec4> widgets_;
 };
 

@@ -43,7 +43,9 @@ void Studio::drawTextPanel() {
     text_ = session_.document()->text();
     textEdited_ = false;
     session_.dismissProblem();
+    note("reverted to the scene as it was last loaded");
   }
+  track("Revert");
   ImGui::SameLine();
   ImGui::TextDisabled(textEdited_ ? "edited: Apply (Ctrl+Enter) loads it" : "");
   if (apply) applyText(text_);
