@@ -86,9 +86,9 @@ bool Studio::writeComparisonPage(const std::filesystem::path& directory) {
 }
 
 void Studio::drawComparePanel() {
-  ImGui::SetNextWindowPos({400, 460}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({560, 520}, ImGuiCond_FirstUseEver);
+  placeAtFirst({400, 460}, {560, 520});
   ImGui::Begin("Compare");
+  trackPanel("compare");
   const std::span<const Renderer* const> renderers = allRenderers();
   const float rightEdge = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
   const ImGuiStyle& style = ImGui::GetStyle();
@@ -106,8 +106,7 @@ void Studio::drawComparePanel() {
                             ImGui::CalcTextSize(std::string(renderers[i + 1]->name()).c_str()).x;
     if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + nextWidth <= rightEdge) ImGui::SameLine();
   }
-  ImGui::Checkbox("Shadow maps for the visible-surface algorithms, as rise compare draws them",
-                  &comparison_.comparedShadows);
+  ImGui::Checkbox("Shadow maps, as rise compare draws them", &comparison_.comparedShadows);
   track("compare/shadows");
   ImGui::BeginDisabled(!session_.scene() || comparison_.job != nullptr);
   if (ImGui::Button("Compare")) {

@@ -237,9 +237,9 @@ bool Studio::saveRayTree(const std::filesystem::path& path) {
 
 void Studio::drawRayTreePanel() {
   if (inspection_.trees.empty()) return;
-  ImGui::SetNextWindowPos({960, 580}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({640, 400}, ImGuiCond_FirstUseEver);
+  placeAtFirst({960, 580}, {640, 400});
   ImGui::Begin("Ray tree");
+  trackPanel("ray tree");
   const int samples = static_cast<int>(inspection_.trees.size());
   ImGui::Text("%s, pixel %d, %d", inspection_.algorithm.c_str(), inspection_.pixel.x,
               inspection_.pixel.y);

@@ -44,7 +44,8 @@ int main(int argc, char** argv) {
   try {
     std::unique_ptr<rise::studio::Script> script;
     if (!scriptPath.empty()) script = std::make_unique<rise::studio::Script>(scriptPath);
-    rise::studio::Window window(1600, 1000, "RISE Studio");
+    rise::studio::Window window(static_cast<int>(rise::studio::kLaidOutWidth),
+                                static_cast<int>(rise::studio::kLaidOutHeight), "RISE Studio");
     // A scripted session lays the panels out afresh, whatever a user left.
     if (script) ImGui::GetIO().IniFilename = nullptr;
     rise::studio::Studio studio(scene);

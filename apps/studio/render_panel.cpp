@@ -67,9 +67,9 @@ void drawShadowSettings(RenderSettings& settings, const AlgorithmDescription& al
 }  // namespace
 
 void Studio::drawRenderPanel() {
-  ImGui::SetNextWindowPos({960, 20}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({640, 560}, ImGuiCond_FirstUseEver);
+  placeAtFirst({960, 20}, {640, 560});
   ImGui::Begin("Render");
+  trackPanel("render");
   const Renderer& renderer = *findRenderer(algorithm_);
   ImGui::SetNextItemWidth(220);
   if (ImGui::BeginCombo("Algorithm", algorithm_.c_str())) {

@@ -85,9 +85,9 @@ std::string kindOf(const SceneDocument& document, const std::string& itemPath) {
 }  // namespace
 
 void Studio::drawScenePanel() {
-  ImGui::SetNextWindowPos({0, 20}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({400, 660}, ImGuiCond_FirstUseEver);
+  placeAtFirst({0, 20}, {400, 660});
   ImGui::Begin("Scene");
+  trackPanel("scene");
   const SceneDocument* document = session_.document();
   if (document == nullptr) {
     ImGui::TextWrapped(session_.path().empty()
@@ -284,9 +284,9 @@ void Studio::drawField(const std::string& parent, const std::string& key) {
 // A new recording brings its steps forward; a clicked pixel, the 3D view
 // where its rays are drawn.
 void Studio::drawViewportPanel() {
-  ImGui::SetNextWindowPos({400, 20}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({560, 440}, ImGuiCond_FirstUseEver);
+  placeAtFirst({400, 20}, {560, 440});
   ImGui::Begin("Viewport");
+  trackPanel("viewport");
   if (player_.steps.empty()) {
     drawSceneView();
   } else if (ImGui::BeginTabBar("views")) {

@@ -40,6 +40,18 @@ void Studio::track(const std::string& name) {
   widgets_[name] = {min.x, min.y, max.x, max.y};
 }
 
+void Studio::trackPanel(const std::string& name) {
+  const ImVec2 position = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  widgets_["panel/" + name] = {position.x, position.y, position.x + size.x, position.y + size.y};
+}
+
+void placeAtFirst(ImVec2 position, ImVec2 size) {
+  const ImVec2 window = ImGui::GetMainViewport()->Size;
+  const ImVec2 scale(window.x / kLaidOutWidth, window.y / kLaidOutHeight);
+  ImGui::SetNextWindowPos({position.x * scale.x, position.y * scale.y}, ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize({size.x * scale.x, size.y * scale.y}, ImGuiCond_FirstUseEver);
+}
+
 std::optional<ImVec4> Studio::widget(const std::string& name) const {
   const auto found = widgets_.find(name);
   if (found == widgets_.end()) return std::nullopt;
@@ -256,13 +268,19 @@ void Studio::drawStatusBar() {
   ImGui::SetNextWindowPos({screen.Pos.x, screen.Pos.y + screen.Size.y - height});
   ImGui::SetNextWindowSize({screen.Size.x, height});
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, {8, 2});
+  // One line high: no taller than a line, as the windows' least size would
+  // make it, its foot below the window's.
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, {1, 1});
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                    ImGuiWindowFlags_NoBringToFrontOnFocus);
+  trackPanel("status bar");
+  widgets_["window"] = {screen.Pos.x, screen.Pos.y, screen.Pos.x + screen.Size.x,
+                        screen.Pos.y + screen.Size.y};
   ImGui::TextUnformatted(status_.c_str());
   ImGui::End();
-  ImGui::PopStyleVar();
+  ImGui::PopStyleVar(2);
 }
 
 }  // namespace rise::studio

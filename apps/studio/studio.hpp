@@ -29,6 +29,13 @@
 
 namespace rise::studio {
 
+// The panels are laid out for a window of 1600 x 1000 pixels; in another,
+// the layout is scaled, so that every panel lies within the window.
+inline constexpr float kLaidOutWidth = 1600.0f, kLaidOutHeight = 1000.0f;
+// Places the panel about to begin where the layout puts it, the first time
+// only (a user's moves are kept).
+void placeAtFirst(ImVec2 position, ImVec2 size);
+
 // The render panel's render: the job while it runs, then its result.
 struct RenderView {
   std::unique_ptr<RenderJob> job;
@@ -176,6 +183,9 @@ class Studio {
   void finishComparisonStep();
   void askBeforeLeaving(std::function<void()> then);
   void track(const std::string& name);
+  // Where the panel begun last lies, as "panel/NAME", for the scripts'
+  // layout: a panel's place, whatever of it is scrolled.
+  void trackPanel(const std::string& name);
   void note(std::string message) { status_ = std::move(message); }
   // Where a file the studio writes is offered first: the folder of the
   // last one written, at first the folder the studio was started in (not

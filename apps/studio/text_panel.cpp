@@ -24,9 +24,9 @@ int moveCursor(ImGuiInputTextCallbackData* data) {
 }  // namespace
 
 void Studio::drawTextPanel() {
-  ImGui::SetNextWindowPos({0, 680}, ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize({400, 300}, ImGuiCond_FirstUseEver);
+  placeAtFirst({0, 680}, {400, 300});
   ImGui::Begin("Scene text");
+  trackPanel("scene text");
   // Asked anew after Apply and Revert, which may settle the problem.
   const auto textRefused = [this] { return session_.problem() && !session_.refusedText().empty(); };
   if (!textEdited_ && textRevision_ != session_.revision()) {

@@ -41,17 +41,6 @@ double distanceFromImageShown(const Image& screenshot, const std::array<float, 4
   return distance / (3 * samples);
 }
 
-double variance(const Image& image) {
-  double sum = 0.0, squares = 0.0;
-  for (const Color& pixel : image.pixels()) {
-    const double grey = (pixel.r + pixel.g + pixel.b) / 3.0;
-    sum += grey;
-    squares += grey * grey;
-  }
-  const double n = static_cast<double>(image.pixels().size());
-  return squares / n - (sum / n) * (sum / n);
-}
-
 TEST_F(Studio, EditsRendersComparesAndSaves) {
   // Started as `rise studio`, the command line's way in.
   ASSERT_EQ(runSession(R"(open ${RISE_SOURCE_DIR}/examples/classic.yaml

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/image.hpp"
 #include "support/temporary_folder_testing.hpp"
 
 namespace rise {
@@ -74,6 +75,18 @@ inline std::string fileText(const std::filesystem::path& path) {
   std::ostringstream text;
   text << file.rdbuf();
   return text.str();
+}
+
+// The spread of a picture's greys: near 0 for a blank one.
+inline double variance(const Image& image) {
+  double sum = 0.0, squares = 0.0;
+  for (const Color& pixel : image.pixels()) {
+    const double grey = (pixel.r + pixel.g + pixel.b) / 3.0;
+    sum += grey;
+    squares += grey * grey;
+  }
+  const double n = static_cast<double>(image.pixels().size());
+  return squares / n - (sum / n) * (sum / n);
 }
 
 }  // namespace rise
