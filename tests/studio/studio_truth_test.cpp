@@ -15,8 +15,9 @@
 namespace rise {
 namespace {
 
-TEST_F(Studio, MarksWhatAnEditLeftOutOfDate) {
-  ASSERT_EQ(runSession(R"(open ${RISE_SOURCE_DIR}/examples/classic.yaml
+// The classic scene rendered, the glass sphere's pixel traced, and the
+// z-buffer compared with the hybrid.
+const std::string kRenderedTracedAndCompared = R"(open ${RISE_SOURCE_DIR}/examples/classic.yaml
 click Render
 wait
 click-pixel 320 230
@@ -25,7 +26,10 @@ click compare/z-buffer
 click compare/hybrid
 click Compare
 wait
-frames 2
+)";
+
+TEST_F(Studio, MarksWhatAnEditLeftOutOfDate) {
+  ASSERT_EQ(runSession(kRenderedTracedAndCompared + R"(frames 2
 layout ${OUT}/before.txt
 set materials/glass/color [0.3, 0.6, 1]
 frames 3
@@ -50,16 +54,7 @@ expect-status reverted to the scene
 // the screen, every panel lies within the window, the compare panel's boxes
 // within the panel, and the screenshot shows the renders.
 TEST_F(Studio, EveryPanelLiesWithinTheWindow) {
-  ASSERT_EQ(runSession(R"(open ${RISE_SOURCE_DIR}/examples/classic.yaml
-click Render
-wait
-click-pixel 320 230
-wait
-click compare/z-buffer
-click compare/hybrid
-click Compare
-wait
-frames 3
+  ASSERT_EQ(runSession(kRenderedTracedAndCompared + R"(frames 3
 layout ${OUT}/layout.txt
 screenshot ${OUT}/screenshot.png
 )"),
