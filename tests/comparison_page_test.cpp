@@ -1,10 +1,11 @@
 // What the comparison page says is true and complete: every counter any
-// algorithm reports is told in words beside it; the page is titled by the
+// algorithm reports is a number, told in words beside it; the page is titled by the
 // scene's file; each picture's caption says which shadows it has, and what
 // the shadow maps took; and where the hybrid is slower than the ray tracer
 // whose image it draws, the page says why, from their counters.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -41,13 +42,14 @@ std::vector<ComparedRender> compared(const Scene& scene, const RenderSettings& s
   std::vector<ComparedRender> renders;
   for (const Renderer* renderer : allRenderers()) {
     RenderObserver observer;
-    renders.push_back({&renderer->description(), renderer->render(scene, settings, observer)});
+    renders.push_back(
+        {&renderer->description(), renderTimed(*renderer, scene, settings, observer)});
   }
   addSameImageCounters(renders, Encoding::Srgb);
   return renders;
 }
 
-TEST(ComparisonPage, EveryCounterIsToldInWords) {
+TEST(ComparisonPage, EveryCounterIsANumberToldInWords) {
   std::set<std::string> untold;
   for (const std::string& name : exampleScenes()) {
     const Scene scene = load(name);
@@ -56,8 +58,13 @@ TEST(ComparisonPage, EveryCounterIsToldInWords) {
       settings.shadows = shadows;
       settings.transparency =
           shadows == ShadowMethod::Volume ? Transparency::ABuffer : Transparency::Sorted;
-      for (const std::string& counter : statisticNames(compared(scene, settings)))
+      const std::vector<ComparedRender> renders = compared(scene, settings);
+      for (const std::string& counter : statisticNames(renders))
         if (!counterMeaning(counter)) untold.insert(counter);
+      for (const ComparedRender& render : renders)
+        for (const auto& [counter, value] : render.result.stats.entries())
+          EXPECT_TRUE(std::isfinite(value))
+              << name << ", " << render.algorithm->name << ": " << counter << " = " << value;
     }
   }
   EXPECT_TRUE(untold.empty()) << "counters with no line in reports/counter_glossary.cpp: " << [&] {
@@ -82,13 +89,16 @@ TEST_F(ComparisonPageFiles, IsTitledByTheSceneAndSaysEachPicturesShadows) {
   const std::string html = page(compared(scene, smallSettings(scene)), path);
   EXPECT_NE(html.find("<title>RISE: classic.yaml</title>"), std::string::npos);
   EXPECT_EQ(html.find(std::string(RISE_SOURCE_DIR)), std::string::npos);
-  std::size_t maps = 0, rays = 0;
-  for (std::size_t at = html.find("shadows by shadow maps, drawn in "); at != std::string::npos;
-       at = html.find("shadows by shadow maps, drawn in ", at + 1))
-    ++maps;
-  for (std::size_t at = html.find("shadows by shadow rays"); at != std::string::npos;
-       at = html.find("shadows by shadow rays", at + 1))
-    ++rays;
+  const auto count = [&](const std::string& text) {
+    std::size_t found = 0;
+    for (std::size_t at = html.find(text); at != std::string::npos; at = html.find(text, at + 1))
+      ++found;
+    return found;
+  };
+  const std::size_t maps = count("shadows by shadow maps"), rays = count("shadows by shadow rays");
+  EXPECT_EQ(count(" s drawing the shadow maps, "), 4u);
+  EXPECT_EQ(count(" s finding the visible surfaces, "), 4u);
+  EXPECT_EQ(count(" s shading, "), 4u);
   EXPECT_EQ(maps, 4u);
   EXPECT_EQ(rays, 3u);
   EXPECT_NE(html.find("<td class=\"meaning\">rays traced, of every kind</td>"), std::string::npos);

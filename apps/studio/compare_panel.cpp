@@ -10,6 +10,7 @@
 #include "algorithms/registry.hpp"
 #include "algorithms/settings_for_scene.hpp"
 #include "core/text.hpp"
+#include "reports/counter_glossary.hpp"
 #include "studio.hpp"
 
 namespace rise::studio {
@@ -181,6 +182,9 @@ void Studio::drawCompareTable() {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(name.c_str());
+    if (const std::optional<std::string_view> meaning = counterMeaning(name);
+        meaning && ImGui::IsItemHovered())
+      ImGui::SetTooltip("%.*s", static_cast<int>(meaning->size()), meaning->data());
     for (const ComparedRender& render : comparison_.renders) {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(statisticCell(render.result.stats, name).c_str());

@@ -7,16 +7,34 @@
 
 namespace rise {
 
+namespace {
+
+// Far beyond any image's side, and still exactly a whole number as a float
+// and an int: a corner projected towards infinity (a shadow volume's far
+// side) or an empty polygon's bounds still make a rectangle of ints.
+constexpr float kFarthestPixel = 1 << 24;
+
+int firstCentreFrom(float low) {
+  return static_cast<int>(std::ceil(std::clamp(low, -kFarthestPixel, kFarthestPixel) - 0.5f));
+}
+
+int pastLastCentreTo(float high) {
+  return static_cast<int>(std::floor(std::clamp(high, -kFarthestPixel, kFarthestPixel) - 0.5f)) + 1;
+}
+
+}  // namespace
+
 PixelRect pixelBoundsOf(std::span<const Vec3> corners) {
   Vec2 low(kInfinity), high(-kInfinity);
   for (const Vec3& corner : corners) {
+    // A corner with no place (NaN) covers nothing rather than everything.
+    if (std::isnan(corner.x) || std::isnan(corner.y)) continue;
     low = glm::min(low, Vec2(corner));
     high = glm::max(high, Vec2(corner));
   }
   // The centres x + 1/2 within [low, high].
-  return {static_cast<int>(std::ceil(low.x - 0.5f)), static_cast<int>(std::ceil(low.y - 0.5f)),
-          static_cast<int>(std::floor(high.x - 0.5f)) + 1,
-          static_cast<int>(std::floor(high.y - 0.5f)) + 1};
+  return {firstCentreFrom(low.x), firstCentreFrom(low.y), pastLastCentreTo(high.x),
+          pastLastCentreTo(high.y)};
 }
 
 void PolygonCoverage::reset(std::span<const Vec3> corners) {

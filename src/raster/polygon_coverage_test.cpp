@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace rise {
@@ -66,6 +67,21 @@ TEST(PolygonCoverage, CoversNothingWithoutArea) {
       std::vector{Vec3(0.5f, 0.5f, 1.0f), Vec3(5.5f, 5.5f, 1.0f), Vec3(3.5f, 3.5f, 1.0f)});
   EXPECT_TRUE(line.isEmpty());
   EXPECT_FALSE(line.covers(Vec2(3.5f, 3.5f)));
+}
+
+// A shadow volume's far side projects towards infinity; its bounds must still
+// be whole numbers of pixels, and a corner with no place adds none.
+TEST(PolygonCoverage, BoundsCornersAtInfinityByPixelsFarOutside) {
+  const float inf = kInfinity;
+  const PixelRect bounds =
+      pixelBoundsOf(std::vector{Vec3(2.0f, 3.0f, 1.0f), Vec3(inf, 3.0f, 1.0f),
+                                Vec3(2.0f, -inf, 1.0f), Vec3(std::nanf(""), 1e30f, 1.0f)});
+  EXPECT_EQ(bounds.x0, 2);
+  EXPECT_EQ(bounds.y1, 3);
+  EXPECT_GT(bounds.x1, 1 << 20);
+  EXPECT_LT(bounds.y0, -(1 << 20));
+  const PixelRect none = pixelBoundsOf(std::span<const Vec3>());
+  EXPECT_TRUE(none.isEmpty());
 }
 
 TEST(PolygonCoverage, TellsWindowsHeldFromWindowsApart) {

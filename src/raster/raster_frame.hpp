@@ -9,6 +9,7 @@
 // front of that point, take every light.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -54,6 +55,11 @@ class RasterFrame final : public VisibleFaces {
 
   // The number of pixels some face is seen at.
   std::uint64_t coveredPixels() const;
+  // The seconds the threads spent shading, added up, estimated from the
+  // pixels timed: one in kShadingTimedEvery, spread over the image so that
+  // every kind of surface is timed in proportion to its share of the writes.
+  double shadingSecondsEstimate() const;
+  static constexpr int kShadingTimedEvery = 31;
 
   // The image as shaded so far.
   const Image& image() const { return result_.image; }
@@ -65,6 +71,7 @@ class RasterFrame final : public VisibleFaces {
   // What a transparent face lets through: its transmission times its colour.
   Color filterOf(int face) const;
   ShadedPixel shadeAt(int x, int y, int face) const;
+  ShadedPixel shadingOf(int x, int y, int face) const;
 
   const ScreenGeometry& screen_;
   const SurfaceShader& shader_;
@@ -79,6 +86,8 @@ class RasterFrame final : public VisibleFaces {
   // wanted, and the pixels covered.
   std::vector<int> faces_;
   bool wantsFaces_;
+  // Of the timed pixels' shading, shared by the threads writing the frame.
+  mutable std::atomic<std::int64_t> timedShadingNanoseconds_{0};
 };
 
 // The outline of a polygon on the screen, for a step's record.

@@ -1,7 +1,9 @@
 #include "raster/visible_surface_renderer.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <ctime>
 #include <optional>
 #include <string>
 #include <utility>
@@ -29,6 +31,13 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
 }
 
 namespace {
+
+template <typename Work>
+double secondsOf(const Work& work) {
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // The film (a weighted sum and a weight), the image, the auxiliary buffers
 // and the images written from them, each pass's own image and buffers and
@@ -316,34 +325,55 @@ RenderResult VisibleSurfaceRenderer::renderProjected(
   const ViewProjection view(ViewFrame(scene.camera, settings.width, settings.height),
                             pass.pixelOffset, pass.lens);
   std::optional<ShadowMaps> shadowMaps;
-  const auto shadowMapsStart = std::chrono::steady_clock::now();
-  if (settings.shadows == ShadowMethod::Map)
-    shadowMaps.emplace(scene, tessellated, shadowMapSettings(settings), workers);
-  const std::chrono::duration<double> shadowMapTime =
-      std::chrono::steady_clock::now() - shadowMapsStart;
+  const double shadowMapSeconds = secondsOf([&] {
+    if (settings.shadows == ShadowMethod::Map)
+      shadowMaps.emplace(scene, tessellated, shadowMapSettings(settings), workers);
+  });
   std::optional<ShadowVolumes> shadowVolumes;
-  if (settings.shadows == ShadowMethod::Volume && description().draws(ShadowMethod::Volume))
-    shadowVolumes.emplace(scene, tessellated, view, workers);
-  const SurfaceShader shader(scene, tessellated, screen, view, settings.shading, workers,
-                             shadowMaps ? &*shadowMaps : nullptr);
-  RasterFrame frame(settings, scene.image.background, screen, shader, workers,
+  const double shadowVolumeSeconds = secondsOf([&] {
+    if (settings.shadows == ShadowMethod::Volume && description().draws(ShadowMethod::Volume))
+      shadowVolumes.emplace(scene, tessellated, view, workers);
+  });
+  std::optional<SurfaceShader> shader;
+  // Gouraud's and flat shading light the vertices and faces before drawing.
+  const double lightingSeconds = secondsOf([&] {
+    shader.emplace(scene, tessellated, screen, view, settings.shading, workers,
+                   shadowMaps ? &*shadowMaps : nullptr);
+  });
+  RasterFrame frame(settings, scene.image.background, screen, *shader, workers,
                     observer.stepRecorder(), shadowVolumes ? &*shadowVolumes : nullptr);
 
   Stats stats;
   addProjectionStats(stats, screen);
-  {
+  const std::clock_t drawingStart = std::clock();
+  const double drawingSeconds = secondsOf([&] {
     FrameRegions regions(observer, frame);
     resolveVisibility(screen, settings, Workers(settings.threads, regions), frame, stats);
-  }
+  });
+  const double drawingThreadSeconds =
+      static_cast<double>(std::clock() - drawingStart) / CLOCKS_PER_SEC;
   stats.add("covered_pixels", static_cast<double>(frame.coveredPixels()));
+  // Shading happens as the algorithm writes each pixel, on every thread: its
+  // share of all the threads' time drawing, estimated from the pixels the
+  // frame timed, is its share of the drawing's time.
+  const double shadingShare =
+      drawingThreadSeconds > 0.0
+          ? std::min(frame.shadingSecondsEstimate() / drawingThreadSeconds, 1.0)
+          : 0.0;
+  const double shadingSeconds = shadingShare * drawingSeconds;
+  stats.add("visible_surface_seconds", drawingSeconds - shadingSeconds);
+  stats.add("shading_seconds", lightingSeconds + shadingSeconds);
 
   RenderResult result = frame.takeResult();
   if (shadowMaps) {
     shadowMaps->addStats(stats);
-    stats.add("shadow_map_seconds", shadowMapTime.count());
+    stats.add("shadow_map_seconds", shadowMapSeconds);
     result.buffers["shadow-map"] = shadowMaps->picture();
   }
-  if (shadowVolumes) shadowVolumes->addStats(stats);
+  if (shadowVolumes) {
+    shadowVolumes->addStats(stats);
+    stats.add("shadow_volume_seconds", shadowVolumeSeconds);
+  }
   result.stats = std::move(stats);
   return result;
 }

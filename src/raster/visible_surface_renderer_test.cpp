@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include "algorithms/registry.hpp"
+#include "scene/light.hpp"
 #include "scene/shapes/box.hpp"
+#include "scene/shapes/sphere.hpp"
 #include "support/raster_testing.hpp"
 
 namespace rise {
@@ -67,6 +70,44 @@ TEST(PassProjections, GiveEachPassWhatProjectingForItAloneGives) {
     // The passes' projections differ: each was moved by its own shift.
     ASSERT_FALSE(given[0].corners.empty());
     EXPECT_NE(given[0].corners[0], given[1].corners[0]);
+  }
+}
+
+// A render's time is split into the shadows, the visible surfaces, the
+// shading and the rest; lights cost the shading, not the visible surfaces.
+TEST(RenderTime, IsSplitIntoVisibleSurfacesAndShadingAsTheirWorkIs) {
+  Scene scene = sceneSeenFrom(Vec3(2.0f, 3.0f, -6.0f), 320, 240);
+  scene.materials[0].kd = 0.5f;
+  scene.materials[0].ks = 0.5f;
+  for (int x = -3; x <= 3; ++x)
+    for (int z = -3; z <= 3; ++z)
+      scene.shapes.push_back(std::make_unique<Sphere>(Vec3(0.3f * x, 0.0f, 0.3f * z), 0.15f, 0));
+  RenderRequest request;
+  // Finely tessellated, so that Gouraud's shading has many vertices to light.
+  request.settings.tessellation = 24;
+  const auto split = [&](int lights) {
+    scene.lights.clear();
+    for (int l = 0; l < lights; ++l)
+      scene.lights.push_back(std::make_unique<PointLight>(
+          Vec3(0.25f * static_cast<float>(l) - 8.0f, 5.0f, -4.0f), Color(0.01f)));
+    RenderObserver observer;
+    return renderTimed(*findRenderer("z-buffer"), scene, settingsFor(scene, request), observer)
+        .stats;
+  };
+  // Phong's shading lights each pixel; Gouraud's each vertex, before drawing.
+  for (const Shading shading : {Shading::Phong, Shading::Gouraud}) {
+    SCOPED_TRACE(std::string(shadingName(shading)));
+    request.settings.shading = shading;
+    const Stats unlit = split(0), lit = split(64);
+    for (const Stats& stats : {unlit, lit}) {
+      EXPECT_GT(stats.value("visible_surface_seconds"), 0.0);
+      EXPECT_GT(stats.value("shading_seconds"), 0.0);
+      EXPECT_LE(stats.value("visible_surface_seconds") + stats.value("shading_seconds"),
+                stats.value("render_seconds"));
+    }
+    EXPECT_GT(lit.value("shading_seconds"), 2.0 * unlit.value("shading_seconds"));
+    EXPECT_GT(lit.value("shading_seconds") - unlit.value("shading_seconds"),
+              lit.value("visible_surface_seconds") - unlit.value("visible_surface_seconds"));
   }
 }
 

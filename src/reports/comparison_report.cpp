@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -26,7 +27,7 @@ const double* findValue(const Stats& stats, const std::string& name) {
 
 std::string formatNumber(double value) {
   std::ostringstream out;
-  if (value == static_cast<double>(static_cast<long long>(value)))
+  if (std::isfinite(value) && std::abs(value) < 1e18 && value == std::trunc(value))
     out << static_cast<long long>(value);
   else
     out << std::setprecision(4) << value;
@@ -117,15 +118,35 @@ std::string counterWord(std::string_view name) {
   return word;
 }
 
-// The shadows an image has, as its caption says, and what they took.
+// The shadows an image has, as its caption says.
 std::string shadowsOf(const ComparedRender& render) {
   const Stats& stats = render.result.stats;
   if (render.algorithm->family != Family::VisibleSurface) return "shadows by shadow rays";
-  if (findValue(stats, "shadow_map_texels"))
-    return "shadows by shadow maps, drawn in " + formatNumber(stats.value("shadow_map_seconds")) +
-           " s of the " + formatNumber(stats.value("render_seconds")) + " s";
+  if (findValue(stats, "shadow_map_texels")) return "shadows by shadow maps";
   if (findValue(stats, "shadow_volume_faces")) return "shadows by shadow volumes";
   return "no shadows (--shadows map or volume draws them)";
+}
+
+// Where a visible-surface render's time went: its shadows, its visible
+// surfaces, its shading and the rest (tessellating and projecting the scene).
+std::string timeSplitOf(const ComparedRender& render) {
+  const Stats& stats = render.result.stats;
+  if (render.algorithm->family != Family::VisibleSurface) return "";
+  const double total = stats.value("render_seconds");
+  double rest = total;
+  std::string split;
+  const auto part = [&](const char* counter, const char* what) {
+    if (!findValue(stats, counter)) return;
+    const double seconds = stats.value(counter);
+    rest -= seconds;
+    split += formatNumber(seconds) + " s " + what + ", ";
+  };
+  part("shadow_map_seconds", "drawing the shadow maps");
+  part("shadow_volume_seconds", "building the shadow volumes");
+  part("visible_surface_seconds", "finding the visible surfaces");
+  part("shading_seconds", "shading");
+  return "Of its " + formatNumber(total) + " s: " + split + formatNumber(std::max(rest, 0.0)) +
+         " s preparing (tessellation, projection, buffers).";
 }
 
 // Why a render slower than the algorithm it draws the image of is so, from
@@ -172,6 +193,8 @@ std::string html(const std::string& sceneName, const std::vector<ComparedRender>
         << "\"></a><figcaption><b>" << escapeHtml(std::string(render.algorithm->name))
         << "</b>: " << escapeHtml(std::string(render.algorithm->summary)) << "<br><i>"
         << escapeHtml(shadowsOf(render)) << "</i>";
+    if (const std::string split = timeSplitOf(render); !split.empty())
+      out << "<br>" << escapeHtml(split);
     if (const std::string why = whySlower(render, renders); !why.empty())
       out << "<br><span class=\"slower\">" << escapeHtml(why) << "</span>";
     out << "</figcaption></figure>\n";
@@ -236,8 +259,9 @@ void addSameImageCounters(std::vector<ComparedRender>& renders, Encoding encodin
              pixelsDiffering(render.result.image, reference->result.image, encoding));
     ours.add("intersection_tests_saved",
              theirs.value("intersection_tests") - ours.value("intersection_tests"));
-    ours.add("speedup_over_" + counterWord(other),
-             theirs.value("render_seconds") / ours.value("render_seconds"));
+    // A render not timed (as a tile's piece may be) has no speed to compare.
+    if (const double seconds = ours.value("render_seconds"); seconds > 0.0)
+      ours.add("speedup_over_" + counterWord(other), theirs.value("render_seconds") / seconds);
   }
 }
 

@@ -24,6 +24,11 @@ constexpr std::array kMeanings = {
     Entry{"covered_pixels", "pixels showing a surface rather than the background"},
     Entry{"overdraw", "pixels written per covered pixel: 1 is each drawn once"},
     Entry{"transparent_blends", "transparent surfaces blended over a pixel"},
+    Entry{"visible_surface_seconds",
+          "of the render's time, the seconds spent finding the surface seen at each pixel"},
+    Entry{"shading_seconds",
+          "of the render's time, the seconds spent shading: the vertices or faces lit first "
+          "(Gouraud's and flat shading), then each pixel, timed at one pixel in 31"},
     // Shadows of the visible-surface algorithms
     Entry{"shadow_map_texels", "texels of all the shadow maps"},
     Entry{"shadow_map_polygons", "polygons drawn into the shadow maps"},
@@ -32,6 +37,8 @@ constexpr std::array kMeanings = {
     Entry{"shadow_tests", "depth comparisons in the shadow maps, one a filter texel"},
     Entry{"shadow_volume_faces", "faces of the shadow volumes"},
     Entry{"shadow_volume_polygons", "shadow-volume polygons on the screen"},
+    Entry{"shadow_volume_seconds",
+          "of the render's time, the seconds spent building the shadow volumes"},
     Entry{"eye_in_volumes", "shadow volumes the eye is inside"},
     Entry{"shadow_volume_tests", "shadow-volume faces tested at a pixel"},
     Entry{"shadow_volume_crossings", "shadow-volume faces found in front of a pixel's surface"},
