@@ -147,10 +147,10 @@ std::unique_ptr<Shape> seamFacingCylinder() {
       worldFromObject(turn));
 }
 
-TEST(TextureFiltering, FollowsTheCoordinatesAcrossACylindersSeamAndOverItsCap) {
+void expectTheSeamAndTheCapFollowed(int width, int height) {
   const Vec3 eye(0.4f, 3.2f, -3.4f), target(0.0f, 0.3f, 0.0f);
   const Scene referenceScene =
-      sceneOf(seamFacingCylinder(), TextureFilter::Bilinear, eye, target, 160, 160);
+      sceneOf(seamFacingCylinder(), TextureFilter::Bilinear, eye, target, width, height);
   const Image reference =
       renderWith("ray-tracing", referenceScene, settingsFor(referenceScene, 64)).image;
   // Object space: the cylinder turns about y, whose heights and distances
@@ -170,12 +170,13 @@ TEST(TextureFiltering, FollowsTheCoordinatesAcrossACylindersSeamAndOverItsCap) {
   const auto nearTheSeam = strip(0.0f, 0.03f);
   const auto awayFromTheSeam = strip(0.04f, 0.07f);
   for (TextureFilter filter : kFootprintFilters) {
-    const Scene scene = sceneOf(seamFacingCylinder(), filter, eye, target, 160, 160);
+    const Scene scene = sceneOf(seamFacingCylinder(), filter, eye, target, width, height);
     const Image drawn = renderWith("z-buffer", scene, settingsFor(scene, 1)).image;
     const RegionError centre = errorOver(scene, drawn, reference, capCentre);
     const RegionError seam = errorOver(scene, drawn, reference, nearTheSeam);
     const RegionError elsewhere = errorOver(scene, drawn, reference, awayFromTheSeam);
-    const std::string what = nameOf(filter) + ": cap centre " + text(centre) + "; seam " +
+    const std::string what = std::to_string(width) + "x" + std::to_string(height) + ", " +
+                             nameOf(filter) + ": cap centre " + text(centre) + "; seam " +
                              text(seam) + "; beside it " + text(elsewhere);
     EXPECT_GT(centre.pixels, 100) << what;
     EXPECT_GT(seam.pixels, 100) << what;
@@ -193,6 +194,12 @@ TEST(TextureFiltering, FollowsTheCoordinatesAcrossACylindersSeamAndOverItsCap) {
       EXPECT_LE(centre.worstLevels, 4) << what;
     }
   }
+}
+
+// At a square image and a tall one, whose pixels' footprints differ.
+TEST(TextureFiltering, FollowsTheCoordinatesAcrossACylindersSeamAndOverItsCap) {
+  expectTheSeamAndTheCapFollowed(160, 160);
+  expectTheSeamAndTheCapFollowed(120, 300);
 }
 
 // A floor seen at a grazing angle, the texture repeated along it. The

@@ -38,6 +38,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Far longer than shading a pixel takes, and shorter than the system's
+// slice of time for a thread.
+constexpr std::int64_t kPausedNanoseconds = 50'000;
+
 // What reading the clock twice adds to a time measured between the reads:
 // the least of a few tries, as the reads themselves are the work.
 std::int64_t clockReadNanoseconds() {
@@ -62,13 +66,21 @@ ShadedPixel RasterFrame::shadeAt(int x, int y, int face) const {
   ShadedPixel pixel = shadingOf(x, y, face);
   const std::int64_t nanoseconds =
       std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now() - start).count();
+  timedPixels_.fetch_add(1, std::memory_order_relaxed);
+  // A thread the system paused while it shaded was timed for the pause:
+  // such a pixel stands for none, the others for it.
+  if (nanoseconds > kPausedNanoseconds) return pixel;
   timedShadingNanoseconds_.fetch_add(
       std::max<std::int64_t>(nanoseconds - clockReadNanoseconds(), 0), std::memory_order_relaxed);
+  keptPixels_.fetch_add(1, std::memory_order_relaxed);
   return pixel;
 }
 
 double RasterFrame::shadingSecondsEstimate() const {
-  return 1e-9 * static_cast<double>(timedShadingNanoseconds_.load()) * kShadingTimedEvery;
+  const std::int64_t kept = keptPixels_.load();
+  if (kept == 0) return 0.0;
+  return 1e-9 * static_cast<double>(timedShadingNanoseconds_.load()) * kShadingTimedEvery *
+         static_cast<double>(timedPixels_.load()) / static_cast<double>(kept);
 }
 
 ShadedPixel RasterFrame::shadingOf(int x, int y, int face) const {

@@ -88,6 +88,8 @@ class RasterFrame final : public VisibleFaces {
   bool wantsFaces_;
   // Of the timed pixels' shading, shared by the threads writing the frame.
   mutable std::atomic<std::int64_t> timedShadingNanoseconds_{0};
+  mutable std::atomic<std::int64_t> timedPixels_{0};
+  mutable std::atomic<std::int64_t> keptPixels_{0};
 };
 
 // The outline of a polygon on the screen, for a step's record.

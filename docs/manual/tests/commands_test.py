@@ -7,7 +7,8 @@ scene where the page writes it, checks that each scene loads (`rise
 validate`, or fails to with the status the page gives), and runs each block
 of commands, checking the status it ends with; and where the prose quotes
 what a command prints ("``sphere at line 25``"), that a command of the page
-printed it.
+printed it, and where it gives a counter's value (the `:counter:` role), that
+the last command before it to print the counter printed that value.
 
     commands_test.py --manifest build/manual/manifest-en.json --rise build/rise
 """
@@ -64,12 +65,38 @@ def check_quotes(page, repository, printed):
     ]
 
 
+# The tolerance of a claim marked `~` ("about 192,000").
+APPROXIMATE = 0.1
+
+
+def check_claim(page, claim, printed):
+    """What is wrong with the page's claim of a counter's value, or None."""
+    counter = claim["counter"]
+    values = re.findall(rf"^\s*{re.escape(counter)}\s+(-?[\d.]+(?:e-?\d+)?)\s*$", printed, re.M)
+    where = f"{page}.rst:{claim['line']}: ``{claim['text']}``"
+    if not values:
+        return f"{where} claims {counter}, which no command before it on the page printed"
+    printed_value, claimed = float(values[-1]), claim["value"]
+    tolerance = APPROXIMATE * abs(printed_value) if claim["approximate"] else 0.0
+    if abs(printed_value - claimed) <= tolerance:
+        return None
+    closeness = "within 10% of" if claim["approximate"] else "exactly"
+    return f"{where} says {counter} is {closeness} {claimed:g}; the command printed {values[-1]}"
+
+
 def check_page(page, blocks, repository, rise, root):
     folder = root / page.replace("/", "-")
     make_workspace(repository, rise, folder)
     failures, passed = [], 0
     printed = ""
     for block in blocks:
+        if block["kind"] == "claim":
+            failure = check_claim(page, block, printed)
+            if failure:
+                failures.append(failure)
+            else:
+                passed += 1
+            continue
         if block["kind"] == "scene":
             completed, what = check_scene(block, folder)
         elif block["kind"] == "command":

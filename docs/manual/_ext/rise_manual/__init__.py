@@ -3,7 +3,7 @@ manual is built, commands and scenes that its tests run, tables of scene keys
 held to the loader, and the language switch."""
 
 from . import manifest
-from .commands import RiseCommand, RiseScene
+from .commands import RiseCommand, RiseScene, counter_role
 from .figures import RiseFigure
 from .languages import add_language_links
 from .scene_keys import SceneKeys
@@ -20,6 +20,7 @@ def setup(app):
     app.add_directive("rise-command", RiseCommand)
     app.add_directive("rise-scene", RiseScene)
     app.add_directive("scene-keys", SceneKeys)
+    app.add_role("counter", counter_role)
     app.connect("env-purge-doc", manifest.purge_page)
     app.connect("env-merge-info", manifest.merge_pages)
     app.connect("build-finished", manifest.write)

@@ -21,13 +21,24 @@ for the commands and figures after it on the page. `:include:
 examples/classic.yaml` shows a scene file of the repository instead. The
 tests check that it loads (`rise validate`), or fails to load with
 `:status: 2`.
+
+    Of the :counter:`2,634 <polygons_in>` polygons ...
+    Of :counter:`about 192,000 <~rays>` rays ...
+    compares :counter:`fifty thousand <~comparisons=50000>` pairs
+
+shows the text before the angle brackets, and holds it to the counter a
+command before it on the page printed last: the number the text reads
+(digits and decimal point; or the one after `=`), exactly, or within 10%
+with `~`.
 """
 
+import re
 from pathlib import Path
 
 from docutils import nodes
 from docutils.parsers.rst import Directive, directives
 from sphinx.directives.code import container_wrapper
+from sphinx.util.nodes import split_explicit_title
 
 from . import manifest
 from .runner import Rise
@@ -90,3 +101,32 @@ class RiseScene(Directive):
         if not name:
             return [block]
         return [container_wrapper(self, block, name)]
+
+
+_CLAIM_TARGET = re.compile(r"(~?)(\w+)(?:=([\d.]+))?$")
+
+
+def counter_role(name, rawtext, text, lineno, inliner, options=None, content=None):
+    """The :counter: role: a number of the prose held to a printed counter."""
+    env = inliner.document.settings.env
+    _, shown, target = split_explicit_title(text)
+    matched = _CLAIM_TARGET.match(target)
+    value = (matched.group(3) or re.sub(r"[^\d.]", "", shown)) if matched else ""
+    if not matched or not value:
+        message = inliner.reporter.error(
+            f"counter: {text!r} is not `TEXT <[~]counter[=VALUE]>` with a number in TEXT or VALUE",
+            line=lineno,
+        )
+        return [inliner.problematic(rawtext, rawtext, message)], [message]
+    manifest.record(
+        env,
+        {
+            "kind": "claim",
+            "line": lineno,
+            "text": shown,
+            "counter": matched.group(2),
+            "value": float(value),
+            "approximate": bool(matched.group(1)),
+        },
+    )
+    return [nodes.inline(shown, shown)], []
