@@ -1,8 +1,8 @@
 #include "algorithms/registry.hpp"
 
-#include <chrono>
 #include <tuple>
 
+#include "core/elapsed.hpp"
 #include "hybrid/hybrid.hpp"
 #include "raster/area_subdivision.hpp"
 #include "raster/depth_sort.hpp"
@@ -74,12 +74,11 @@ std::vector<const Renderer*> renderersOffering(Look look) {
 
 RenderResult renderTimed(const Renderer& renderer, const Scene& scene,
                          const RenderSettings& settings, RenderObserver& observer) {
-  const auto start = std::chrono::steady_clock::now();
-  RenderResult result = renderer.render(scene, settings, observer);
-  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-  result.stats.add("render_seconds", seconds.count());
+  RenderResult result;
+  const double seconds = secondsOf([&] { result = renderer.render(scene, settings, observer); });
+  result.stats.add("render_seconds", seconds);
   if (const double rays = result.stats.value("rays"); rays > 0.0)
-    result.stats.add("rays_per_second", rays / seconds.count());
+    result.stats.add("rays_per_second", rays / seconds);
   return result;
 }
 

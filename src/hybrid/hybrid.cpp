@@ -68,6 +68,7 @@
 #include <span>
 #include <vector>
 
+#include "core/elapsed.hpp"
 #include "hybrid/hybrid_group.hpp"
 #include "raster/bands.hpp"
 #include "render/render_limits.hpp"
@@ -143,13 +144,6 @@ RenderResult HybridRenderer::render(const Scene& scene, const RenderSettings& se
 }
 
 namespace hybrid {
-namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-}  // namespace
 
 // Each pass of the group with the images and records it fills; where the
 // film keeps each sample in its pixel, one image of samples for them all.

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <ctime>
 #include <optional>
 #include <string>
 #include <utility>
 
+#include "core/elapsed.hpp"
 #include "core/random.hpp"
 #include "core/sampler.hpp"
 #include "core/text.hpp"
@@ -31,13 +31,6 @@ void addProjectionStats(Stats& stats, const ScreenGeometry& screen) {
 }
 
 namespace {
-
-template <typename Work>
-double secondsOf(const Work& work) {
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The film (a weighted sum and a weight), the image, the auxiliary buffers
 // and the images written from them, each pass's own image and buffers and

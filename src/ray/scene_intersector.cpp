@@ -1,8 +1,9 @@
 #include "ray/scene_intersector.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <optional>
+
+#include "core/elapsed.hpp"
 
 namespace rise {
 namespace {
@@ -48,10 +49,7 @@ class ShadowCrossings final : public CrossingVisitor {
 }  // namespace
 
 SceneIntersector::SceneIntersector(const Scene& scene, Accel accel, int threads) : scene_(scene) {
-  const auto start = std::chrono::steady_clock::now();
-  accelerator_ = buildAccelerator(accel, scene.shapes, threads);
-  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
-  buildSeconds_ = seconds.count();
+  buildSeconds_ = secondsOf([&] { accelerator_ = buildAccelerator(accel, scene.shapes, threads); });
 }
 
 Color SceneIntersector::transmittance(const Ray& ray, float tMin, float tMax,
