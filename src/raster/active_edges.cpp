@@ -1,8 +1,16 @@
 #include "raster/active_edges.hpp"
 
+#include <cmath>
 #include <iterator>
 
 namespace rise {
+
+namespace {
+
+// A corner with no place on the screen (NaN) bounds no edge.
+bool hasNoPlace(const Vec3& corner) { return std::isnan(corner.x) || std::isnan(corner.y); }
+
+}  // namespace
 
 ActiveEdgeList::ActiveEdgeList(const ScreenGeometry& screen, const PixelRect& band,
                                std::span<const int> polygons, EdgeListCounters& counters)
@@ -17,10 +25,11 @@ void ActiveEdgeList::buildEdgeTable(const ScreenGeometry& screen) {
       const Vec3& from = corners[i];
       const Vec3& to = corners[nextCorner(i, corners.size())];
       if (from.y == to.y) continue;  // horizontal: it crosses no scanline centre
+      if (hasNoPlace(from) || hasNoPlace(to)) continue;
       const Vec3& top = from.y < to.y ? from : to;
       const Vec3& bottom = from.y < to.y ? to : from;
-      const int first = std::max(firstScanlineFrom(top.y), band_.y0);
-      const int end = std::min(firstScanlineFrom(bottom.y), band_.y1);
+      const int first = std::max(firstCentreFrom(top.y), band_.y0);
+      const int end = std::min(firstCentreFrom(bottom.y), band_.y1);
       if (first >= end) continue;
       const float step = (bottom.x - top.x) / (bottom.y - top.y);
       const float x = top.x + (static_cast<float>(first) + 0.5f - top.y) * step;

@@ -26,6 +26,7 @@
 #include <utility>
 #include <vector>
 
+#include "raster/pixel_centres.hpp"
 #include "raster/screen_geometry.hpp"
 
 namespace rise {
@@ -50,9 +51,6 @@ struct EdgeListCounters {
     return *this;
   }
 };
-
-// The first scanline (or pixel column) whose centre c + 1/2 is at or past `y`.
-inline int firstScanlineFrom(float y) { return static_cast<int>(std::ceil(y - 0.5f)); }
 
 class ActiveEdgeList {
  public:
@@ -98,7 +96,7 @@ class ActiveEdgeList {
 // The pixel columns whose centres x + 1/2 lie in [left, right), within
 // [0, width): first and end.
 inline std::pair<int, int> centresOfSpan(float left, float right, int width) {
-  return {std::max(firstScanlineFrom(left), 0), std::min(firstScanlineFrom(right), width)};
+  return {std::max(firstCentreFrom(left), 0), std::min(firstCentreFrom(right), width)};
 }
 
 }  // namespace rise

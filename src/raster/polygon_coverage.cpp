@@ -5,24 +5,9 @@
 #include <cmath>
 #include <tuple>
 
+#include "raster/pixel_centres.hpp"
+
 namespace rise {
-
-namespace {
-
-// Far beyond any image's side, and still exactly a whole number as a float
-// and an int: a corner projected towards infinity (a shadow volume's far
-// side) or an empty polygon's bounds still make a rectangle of ints.
-constexpr float kFarthestPixel = 1 << 24;
-
-int firstCentreFrom(float low) {
-  return static_cast<int>(std::ceil(std::clamp(low, -kFarthestPixel, kFarthestPixel) - 0.5f));
-}
-
-int pastLastCentreTo(float high) {
-  return static_cast<int>(std::floor(std::clamp(high, -kFarthestPixel, kFarthestPixel) - 0.5f)) + 1;
-}
-
-}  // namespace
 
 PixelRect pixelBoundsOf(std::span<const Vec3> corners) {
   Vec2 low(kInfinity), high(-kInfinity);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "io/image_io.hpp"
 #include "reports/colours.hpp"
@@ -19,8 +20,38 @@ void plot(Image& image, int x, int y, const Color& colour) {
   if (x >= 0 && y >= 0 && x < image.width() && y < image.height()) image.at(x, y) = colour;
 }
 
+// Cuts the segment to the image's rectangle, one pixel wider on each side
+// (Liang and Barsky 1984), so that a corner far outside costs no steps; false
+// if nothing of it is left. In doubles, so that a cut far from either end
+// still lands within a pixel of the image's side.
+bool clipToImage(const Image& image, Vec2& from, Vec2& to) {
+  const glm::dvec2 start(from), delta = glm::dvec2(to) - start;
+  const glm::dvec2 low(-1.0), high(image.width() + 1.0, image.height() + 1.0);
+  double enter = 0.0, leave = 1.0;
+  for (int axis = 0; axis < 2; ++axis) {
+    for (const auto& [towards, room] : {std::pair(-delta[axis], start[axis] - low[axis]),
+                                        std::pair(delta[axis], high[axis] - start[axis])}) {
+      if (!std::isfinite(towards) || !std::isfinite(room)) return false;
+      if (towards == 0.0) {
+        if (room < 0.0) return false;
+        continue;
+      }
+      const double t = room / towards;
+      if (towards < 0.0)
+        enter = std::max(enter, t);
+      else
+        leave = std::min(leave, t);
+    }
+  }
+  if (enter > leave) return false;
+  from = Vec2(start + delta * enter);
+  to = Vec2(start + delta * leave);
+  return true;
+}
+
 // Steps one pixel at a time along the longer axis, so the line has no gaps.
 void drawLine(Image& image, Vec2 from, Vec2 to, const Color& colour) {
+  if (!clipToImage(image, from, to)) return;
   const int count =
       static_cast<int>(std::ceil(std::max(std::abs(to.x - from.x), std::abs(to.y - from.y))));
   for (int i = 0; i <= count; ++i) {
