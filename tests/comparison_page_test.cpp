@@ -137,5 +137,22 @@ TEST_F(ComparisonPageFiles, SaysWhyTheHybridIsSlowerWhereItIs) {
   EXPECT_EQ(page(renders, "s.yaml").find("Slower than"), std::string::npos);
 }
 
+// The split's parts are estimates: one too small to tell from zero is said
+// to be so, not printed as no time at all.
+TEST_F(ComparisonPageFiles, SaysAPartOfTheTimeTooSmallToMeasureIsSo) {
+  Stats stats;
+  stats.add("render_seconds", 0.1);
+  stats.add("shadow_map_seconds", 0.03);
+  stats.add("visible_surface_seconds", 0.0);
+  stats.add("shading_seconds", 0.05);
+  const std::vector<ComparedRender> renders = {
+      {&findRenderer("scanline")->description(), {Image(2, 2), {}, stats}}};
+  const std::string html = page(renders, "s.yaml");
+  EXPECT_NE(html.find("Of its 0.1 s: 0.03 s drawing the shadow maps, under 0.5% of it finding the "
+                      "visible surfaces, 0.05 s shading, 0.02 s preparing"),
+            std::string::npos)
+      << html;
+}
+
 }  // namespace
 }  // namespace rise

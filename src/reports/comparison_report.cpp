@@ -127,6 +127,9 @@ std::string shadowsOf(const ComparedRender& render) {
   return "no shadows (--shadows map or volume draws them)";
 }
 
+// The smallest part of a render's time its caption tells in seconds.
+constexpr double kSmallestShare = 0.005;
+
 // Where a visible-surface render's time went: its shadows, its visible
 // surfaces, its shading and the rest (tessellating and projecting the scene).
 std::string timeSplitOf(const ComparedRender& render) {
@@ -139,7 +142,11 @@ std::string timeSplitOf(const ComparedRender& render) {
     if (!findValue(stats, counter)) return;
     const double seconds = stats.value(counter);
     rest -= seconds;
-    split += formatNumber(seconds) + " s " + what + ", ";
+    // Shading is estimated from a sample of pixels; what is left beside it
+    // when it takes nearly all is too little to tell from zero.
+    split +=
+        (seconds < kSmallestShare * total ? "under 0.5% of it" : formatNumber(seconds) + " s") +
+        " " + what + ", ";
   };
   part("shadow_map_seconds", "drawing the shadow maps");
   part("shadow_volume_seconds", "building the shadow volumes");
