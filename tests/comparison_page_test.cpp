@@ -100,7 +100,7 @@ TEST_F(ComparisonPageFiles, IsTitledByTheSceneAndSaysEachPicturesShadows) {
   EXPECT_EQ(count(" s finding the visible surfaces, "), 4u);
   EXPECT_EQ(count(" s shading, "), 4u);
   EXPECT_EQ(maps, 4u);
-  EXPECT_EQ(rays, 3u);
+  EXPECT_EQ(rays, 4u);
   EXPECT_NE(html.find("<td class=\"meaning\">rays traced, of every kind</td>"), std::string::npos);
   EXPECT_EQ(html.find("<td class=\"meaning\"></td>"), std::string::npos);
 }

@@ -9,6 +9,7 @@
 
 #include "algorithms/registry.hpp"
 #include "io/scene_file.hpp"
+#include "support/image_error_testing.hpp"
 #include "support/raster_testing.hpp"
 
 namespace rise {
@@ -28,15 +29,6 @@ RenderResult render(const std::string& sceneText, const std::string& algorithm,
 }
 
 PixelSampling jittered(int samples) { return {samples, SamplePattern::Jittered}; }
-
-double rmse(const Image& a, const Image& b) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.pixels().size(); ++i) {
-    const Color d = a.pixels()[i] - b.pixels()[i];
-    sum += glm::dot(d, d) / 3.0;
-  }
-  return std::sqrt(sum / static_cast<double>(a.pixels().size()));
-}
 
 // How many pixels of row y are strictly between 10% and 90% of `full`.
 int transitionWidth(const Image& image, int y, float full = 1.0f) {

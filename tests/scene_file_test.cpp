@@ -260,7 +260,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"unknown_key_far.yaml",
                  "unknown_key_far.yaml:4:33: unknown key 'shininess' in material 'red'; expected "
                  "one of: color, texture, bump, normal_map, ka, kd, ks, ks_texture, n, "
-                 "reflection, transmission, ior, roughness"},
+                 "reflection, transmission, ior, roughness, emission"},
         BadScene{"duplicate_key.yaml",
                  "duplicate_key.yaml:2:52: duplicate key 'position' in camera; a key may appear "
                  "only once"},

@@ -78,6 +78,25 @@ void addShadowOptions(CLI::App& command, RenderSettings& settings) {
       ->check(wholeNumberFrom(0, 16));
 }
 
+void addPathOptions(CLI::App& command, RenderSettings& settings) {
+  command
+      .add_option("--light-sampling", settings.lightSampling,
+                  "Path tracing: finds the lights by shadow rays (nee), by its BRDF's samples "
+                  "(brdf) or both, weighted (mis, the default)")
+      ->transform(choicesNamedBy(kAllLightSamplings, lightSamplingName));
+  command.add_flag("--no-roulette{false}", settings.russianRoulette,
+                   "Path tracing: follow every path to --max-depth, without Russian roulette");
+  command
+      .add_option("--time-limit", settings.progression.timeLimit,
+                  "Path tracing: stop refining after about this many seconds")
+      ->check(finitePositiveNumber());
+  command
+      .add_option("--noise-target", settings.progression.noiseTarget,
+                  "Path tracing: stop refining when the estimated noise (relative standard "
+                  "error) falls to this, e.g. 0.01")
+      ->check(finitePositiveNumber());
+}
+
 }  // namespace
 
 void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
@@ -145,6 +164,7 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
                   "z-buffer: transparent surfaces sorted back to front or by the a-buffer's "
                   "fragment lists (default sorted)")
       ->transform(choicesNamedBy(kAllTransparencies, transparencyName));
+  addPathOptions(command, settings);
 }
 
 CLI::Validator encodings() {

@@ -167,6 +167,16 @@ void Studio::drawRenderSettings(const AlgorithmDescription& algorithm) {
       case Option::MaxDepth:
         ImGui::SliderInt("Max depth", &settings.maxDepth, 1, 64);
         break;
+      case Option::LightSampling:
+        choiceCombo("Light sampling", settings.lightSampling, kAllLightSamplings,
+                    lightSamplingName);
+        ImGui::Checkbox("Russian roulette", &settings.russianRoulette);
+        break;
+      case Option::Progression:
+        ImGui::SliderInt("Path samples", &settings.progression.samples, 1, 4096);
+        ImGui::InputDouble("Time limit (s, 0: none)", &settings.progression.timeLimit);
+        settings.progression.timeLimit = std::max(settings.progression.timeLimit, 0.0);
+        break;
     }
   }
   ImGui::PopItemWidth();

@@ -9,6 +9,7 @@
 #include "raster/scanline.hpp"
 #include "raster/z_buffer.hpp"
 #include "ray/distributed_ray_tracing.hpp"
+#include "ray/path_tracing.hpp"
 #include "ray/ray_tracing.hpp"
 
 namespace rise {
@@ -35,7 +36,8 @@ std::span<const Renderer* const> allRenderers() {
       ScanlineRenderer,
       WhittedRayTracer,
       DistributedRayTracer,
-      HybridRenderer>();
+      HybridRenderer,
+      PathTracer>();
   // clang-format on
 }
 

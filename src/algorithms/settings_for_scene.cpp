@@ -50,6 +50,10 @@ RenderSettings settingsFor(const Scene& scene, const RenderRequest& request) {
                         std::to_string(settings.height) + " pixels; expected at most " +
                         std::to_string(kLargestImageSide) + " pixels a side (--width, --height)");
   settings.sampling = pixelSampling(request.image, scene.image.sampling);
+  // A path tracer's single sample is noise: it takes the samples asked for,
+  // or its own count but no fewer than the scene's.
+  settings.progression.samples = request.image.samples.value_or(
+      std::max(settings.progression.samples, scene.image.sampling.samples));
   if (std::string problem = samplingProblem(settings.sampling); !problem.empty())
     throw SettingsError(problem);
   if (const std::optional<PixelRect>& region = settings.region;

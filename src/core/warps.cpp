@@ -71,4 +71,14 @@ float uniformConeDensity(const Vec3& direction, float cosineOfHalfAngle) {
   return direction.z >= cosineOfHalfAngle ? 1.0f / (2.0f * kPi * (1.0f - cosineOfHalfAngle)) : 0.0f;
 }
 
+// The inverse of the lobe's distribution in cos(theta): u = cos^(n+1).
+Vec3 squareToPhongLobe(const Vec2& u, float exponent) {
+  return atHeight(std::pow(1.0f - u.y, 1.0f / (exponent + 1.0f)), u.x);
+}
+
+float phongLobeDensity(const Vec3& direction, float exponent) {
+  if (direction.z <= 0.0f) return 0.0f;
+  return (exponent + 1.0f) / (2.0f * kPi) * std::pow(direction.z, exponent);
+}
+
 }  // namespace rise

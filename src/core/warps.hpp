@@ -48,4 +48,11 @@ float cosineHemisphereDensity(const Vec3& direction);
 Vec3 squareToUniformCone(const Vec2& u, float cosineOfHalfAngle);
 float uniformConeDensity(const Vec3& direction, float cosineOfHalfAngle);
 
+// The lobe of Phong's highlight about +z, cos^n(theta) normalised over the
+// hemisphere, as the modified Phong BRDF (Lafortune and Willems 1994) is
+// sampled: the density is (n + 1) / (2 pi) cos^n(theta), 0 below the
+// horizon.
+Vec3 squareToPhongLobe(const Vec2& u, float exponent);
+float phongLobeDensity(const Vec3& direction, float exponent);
+
 }  // namespace rise

@@ -10,7 +10,7 @@ namespace {
 using namespace chi_square_testing;
 
 // The chi-square tests of this file, each held to its share of 0.01.
-constexpr int kTests = 6;
+constexpr int kTests = 9;
 const double kSignificance = significanceFor(kTests);
 
 TEST(SquareToDisk, MapsIntoTheDiskAndTheCentreToTheCentre) {
@@ -50,6 +50,16 @@ TEST(Warps, TheConeIsUniformWithinItsAngle) {
         [&](const Vec2& u) { return squareToUniformCone(u, cosine); },
         [&](const Vec3& direction) { return uniformConeDensity(direction, cosine); });
     EXPECT_TRUE(outcome.passes(kSignificance)) << "cosine " << cosine << ": " << outcome.report;
+  }
+}
+
+// A wide lobe, a diffuse one (n = 0) and a sharp one.
+TEST(Warps, ThePhongLobeFollowsTheCosinePower) {
+  for (const float exponent : {0.0f, 4.0f, 60.0f}) {
+    const ChiSquareOutcome outcome = chiSquareOfDirections(
+        [&](const Vec2& u) { return squareToPhongLobe(u, exponent); },
+        [&](const Vec3& direction) { return phongLobeDensity(direction, exponent); });
+    EXPECT_TRUE(outcome.passes(kSignificance)) << "n " << exponent << ": " << outcome.report;
   }
 }
 

@@ -229,7 +229,7 @@ Material readMaterial(const MapEntry& entry, SceneFiles& files) {
   const std::string name = "material " + inQuotes(entry.key);
   const CheckedMap map(makeField(entry.value, name, entry.keyMark), name,
                        {"color", "texture", "bump", "normal_map", "ka", "kd", "ks", "ks_texture",
-                        "n", "reflection", "transmission", "ior", "roughness"});
+                        "n", "reflection", "transmission", "ior", "roughness", "emission"});
   Material material;
   material.name = entry.key;
   readIfPresent(map, "color", material.color, readColor);
@@ -254,6 +254,7 @@ Material readMaterial(const MapEntry& entry, SceneFiles& files) {
                 [](const Field& field) { return readNumberFrom(field, kLeastIor, kGreatestIor); });
   readIfPresent(map, "roughness", material.roughness,
                 [](const Field& field) { return readNumberFrom(field, 0.0f, kGreatestRoughness); });
+  readIfPresent(map, "emission", material.emission, readColor);
   return material;
 }
 

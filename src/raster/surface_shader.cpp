@@ -173,7 +173,7 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre, const LightVisibi
       const Vec3 w = gouraudWeights(weights, {&a, &b, &c});
       const SplitLight interpolated{
           w.x * lit[0].byColor + w.y * lit[1].byColor + w.z * lit[2].byColor,
-          w.x * lit[0].byKs + w.y * lit[1].byKs + w.z * lit[2].byKs};
+          w.x * lit[0].byKs + w.y * lit[1].byKs + w.z * lit[2].byKs, lit[0].emitted};
       color = interpolated.with(colors);
       break;
     }

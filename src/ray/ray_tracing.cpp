@@ -135,7 +135,7 @@ class Recursion {
   // Shade: the local Phong model, then the mirror and the refracted rays.
   Color shade(const ShadingFrame& frame, const Material& material, int depth) {
     const SurfaceColors colors = surfaceColors(material, frame.surface);
-    const Color ambient = phongAmbient(material, colors, context_.scene.ambient);
+    const Color ambient = phongUnlit(material, colors, context_.scene.ambient);
     if (tree_) [[unlikely]]
       tree_->ambient(ambient);
     return withMirrorAndGlass(ambient + directLight(frame, material, colors, depth), frame,
@@ -235,7 +235,7 @@ FirstHitShading::FirstHitShading(const TracingContext& context, const Ray& ray, 
       seen_{Color(0.0f), hit.t * glm::length(ray.direction), frame_.surface.normal},
       firstShadowRay_(shadowRays.size()) {
   const SurfaceColors colors = surfaceColors(*material_, frame_.surface);
-  ambient_ = phongAmbient(*material_, colors, context.scene.ambient);
+  ambient_ = phongUnlit(*material_, colors, context.scene.ambient);
   Recursion recursion(context, choices, counters, nullptr);
   recursion.forEachShadowRay(
       frame_, *material_, colors, 1,

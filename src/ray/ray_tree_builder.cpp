@@ -14,6 +14,16 @@ int indexOf(const Pointers& pointers, const T* item) {
 
 }  // namespace
 
+RayNode RayTreeBuilder::shadowFromCurrent(const Ray& ray) {
+  RayNode node;
+  node.kind = RayKind::Shadow;
+  node.depth = current().depth;
+  node.origin = ray.origin;
+  node.direction = glm::normalize(ray.direction);
+  node.weight = current().weight;
+  return node;
+}
+
 int RayTreeBuilder::add(RayNode node) {
   node.parent = current_;
   const int index = static_cast<int>(tree_.rays.size());
@@ -49,12 +59,7 @@ void RayTreeBuilder::ambient(const Color& term) {
 
 void RayTreeBuilder::shadow(const Ray& ray, const Light& light, float distance,
                             const Color& visible, const Color& diffuse, const Color& specular) {
-  RayNode node;
-  node.kind = RayKind::Shadow;
-  node.depth = current().depth;
-  node.origin = ray.origin;
-  node.direction = glm::normalize(ray.direction);
-  node.weight = current().weight;
+  RayNode node = shadowFromCurrent(ray);
   node.light = indexOf(scene_.lights, &light);
   node.distance = distance;
   node.transmittance = visible;
@@ -65,10 +70,28 @@ void RayTreeBuilder::shadow(const Ray& ray, const Light& light, float distance,
   add(std::move(node));
 }
 
+RayNode::PathVertex& RayTreeBuilder::pathVertex() {
+  if (!current().path) current().path.emplace();
+  return *current().path;
+}
+
+void RayTreeBuilder::emitterShadow(const Ray& ray, float distance, bool reaches, const Color& lit,
+                                   float weight) {
+  RayNode node = shadowFromCurrent(ray);
+  node.distance = distance;
+  node.transmittance = Color(reaches ? 1.0f : 0.0f);
+  node.diffuse = lit;
+  node.misWeight = weight;
+  node.color = node.transmittance * lit * weight;
+  node.contribution = node.weight * node.color;
+  add(std::move(node));
+}
+
 void RayTreeBuilder::end(const Color& color) {
   RayNode& node = current();
   node.color = color;
   if (!node.hit) node.contribution = node.weight * color;
+  if (node.path) node.contribution = node.weight * node.path->emitted;
   current_ = node.parent;
 }
 

@@ -29,12 +29,20 @@ class RayTreeBuilder {
   // diffuse and specular terms there.
   [[gnu::noinline]] void shadow(const Ray& ray, const Light& light, float distance,
                                 const Color& visible, const Color& diffuse, const Color& specular);
+  // The path tracer's record of the current ray's surface, to fill in.
+  [[gnu::noinline]] RayNode::PathVertex& pathVertex();
+  // A shadow ray from the current ray's surface to a point of an emitter,
+  // `distance` away, blocked or not: `lit` (f Le cos / p) weighed by `weight`.
+  [[gnu::noinline]] void emitterShadow(const Ray& ray, float distance, bool reaches,
+                                       const Color& lit, float weight);
   // The current ray ends, bringing back `color`.
   [[gnu::noinline]] void end(const Color& color);
 
  private:
   RayNode& current() { return tree_.rays[static_cast<std::size_t>(current_)]; }
   int add(RayNode node);
+  // A shadow ray leaving the current ray's surface.
+  RayNode shadowFromCurrent(const Ray& ray);
 
   const Scene& scene_;
   RayTree& tree_;

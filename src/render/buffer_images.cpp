@@ -109,8 +109,11 @@ Image visualizeBuffer(std::string_view name, const Image& raw) {
   if (name == "cost") return visualizeCost(raw);
   if (name == "face") return visualizeFace(raw);
   if (name == "shadow-map") return visualizeShadowMap(raw);
+  // The standard error, whose scale is the pixel's own, on the cost's colours.
+  if (name == "variance")
+    return visualizeCost(mapPixels(raw, [](const Color& variance) { return glm::sqrt(variance); }));
   throw std::invalid_argument("unknown buffer '" + std::string(name) +
-                              "' (known: depth, normal, cost, face, shadow-map)");
+                              "' (known: depth, normal, cost, face, shadow-map, variance)");
 }
 
 }  // namespace rise

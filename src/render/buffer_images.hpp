@@ -27,6 +27,9 @@ namespace rise {
 //  "shadow-map" grey by the inverse of the depth seen from the light: the
 //           nearest white, half as bright twice as far, nothing black (an
 //           infinite plane's far reaches would crush a linear scale).
+//  "variance" each pixel's standard error (the square root of its mean's
+//           variance) over the largest, on the cost's Turbo colours: where
+//           a progressive render is still noisy.
 // Throws std::invalid_argument for any other name.
 Image visualizeBuffer(std::string_view name, const Image& raw);
 

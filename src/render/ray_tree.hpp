@@ -51,6 +51,23 @@ struct RayNode {
   Color transmittance{0.0f};
   Color diffuse{0.0f};
   Color specular{0.0f};
+
+  // Path tracing. At a hit: the light the surface emits as counted (times the
+  // weight multiple importance sampling gave it against a shadow ray), the
+  // density of the direction the path went on in per steradian (for a mirror
+  // or glass, the chance of its lobe), and Russian roulette's verdict. For a
+  // shadow ray to an emitter (light -1): f Le cos / p of the point it aims
+  // at in `diffuse`, and its weight against the BRDF's sample.
+  struct PathVertex {
+    Color emitted{0.0f};
+    float emittedWeight = 1.0f;
+    float density = 0.0f;
+    bool singular = false;
+    float survival = 1.0f;
+    bool endedByRoulette = false;
+  };
+  std::optional<PathVertex> path;
+  float misWeight = 1.0f;
 };
 
 // The coordinates of a sample in Cook's dimensions beyond the pixel: where on

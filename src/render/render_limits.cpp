@@ -95,7 +95,7 @@ void checkRenderFits(const Scene& scene, const RenderSettings& settings, const R
                "'height')"
              : ", most of it for " + needs.mostOfTheMemory + "; expected " + needs.toTakeLess));
   if (needs.rays > kMostRays) {
-    const Material* branching = branchingMaterial(scene);
+    const Material* branching = needs.raysBranch ? branchingMaterial(scene) : nullptr;
     throw RenderLimitError(
         "a " + std::to_string(settings.width) + " x " + std::to_string(settings.height) +
         " image with " + samplesAPixel(settings) + " and --max-depth " +

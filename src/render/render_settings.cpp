@@ -50,4 +50,16 @@ std::string_view transparencyName(Transparency transparency) {
   return "?";
 }
 
+std::string_view lightSamplingName(LightSampling sampling) {
+  switch (sampling) {
+    case LightSampling::Lights:
+      return "nee";
+    case LightSampling::Brdf:
+      return "brdf";
+    case LightSampling::Both:
+      return "mis";
+  }
+  return "?";
+}
+
 }  // namespace rise

@@ -47,6 +47,25 @@ enum class Transparency { Sorted, ABuffer };
 inline constexpr Transparency kAllTransparencies[] = {Transparency::Sorted, Transparency::ABuffer};
 std::string_view transparencyName(Transparency transparency);  // as on the command line: "a-buffer"
 
+// How the path tracer finds the light at each vertex of a path: by shadow
+// rays to points chosen on the lights (next-event estimation), by the
+// directions its BRDF samples happening to reach one, or by both, weighted by
+// multiple importance sampling's power heuristic (Veach and Guibas 1995).
+enum class LightSampling { Lights, Brdf, Both };
+inline constexpr LightSampling kAllLightSamplings[] = {LightSampling::Lights, LightSampling::Brdf,
+                                                       LightSampling::Both};
+std::string_view lightSamplingName(LightSampling sampling);  // as on the command line: "mis"
+
+// How long a progressive algorithm (the path tracer) refines its image, pass
+// after pass: up to `samples` a pixel, for at most `timeLimit` seconds of
+// passes (0: no limit), or until the estimated noise falls to `noiseTarget`
+// (0: no target), whichever comes first.
+struct Progression {
+  int samples = 64;
+  double timeLimit = 0.0;
+  double noiseTarget = 0.0;
+};
+
 // How to render, whatever the algorithm. The image size comes from the scene
 // unless the command line overrides it.
 struct RenderSettings {
@@ -73,6 +92,11 @@ struct RenderSettings {
   int shadowFilter = 1;
   // How the z-buffer orders its transparent surfaces.
   Transparency transparency = Transparency::Sorted;
+  // The path tracer's: how it finds the light, whether Russian roulette ends
+  // its paths (Arvo and Kirk 1990), and how long it refines.
+  LightSampling lightSampling = LightSampling::Both;
+  bool russianRoulette = true;
+  Progression progression;
 
   // Only this part of the image, for renders split among processes: the
   // result holds its pixels alone, each the value it has in the whole image

@@ -34,6 +34,10 @@ std::string_view toString(Option option) {
       return "accel";
     case Option::MaxDepth:
       return "max-depth";
+    case Option::LightSampling:
+      return "light-sampling";
+    case Option::Progression:
+      return "time-limit";
   }
   return "?";
 }
@@ -56,6 +60,8 @@ std::string_view toString(Effect effect) {
       return "gloss";
     case Effect::Transparency:
       return "transparency";
+    case Effect::IndirectLight:
+      return "indirect light";
   }
   return "?";
 }

@@ -69,11 +69,14 @@ enum class Option {
   Shadows,
   Transparency,
   Accel,
-  MaxDepth
+  MaxDepth,
+  LightSampling,  // and the roulette
+  Progression     // the time limit and the noise target
 };
-inline constexpr Option kAllOptions[] = {Option::Shading,   Option::Culling, Option::Tessellation,
-                                         Option::PlaneSize, Option::Shadows, Option::Transparency,
-                                         Option::Accel,     Option::MaxDepth};
+inline constexpr Option kAllOptions[] = {
+    Option::Shading,       Option::Culling,      Option::Tessellation, Option::PlaneSize,
+    Option::Shadows,       Option::Transparency, Option::Accel,        Option::MaxDepth,
+    Option::LightSampling, Option::Progression};
 
 // What an algorithm shows of light beyond the Phong model at each surface.
 enum class Effect {
@@ -84,7 +87,8 @@ enum class Effect {
   MotionBlur,
   SoftShadows,
   Gloss,
-  Transparency,  // transparent surfaces blended over what is behind them, without refraction
+  Transparency,   // transparent surfaces blended over what is behind them, without refraction
+  IndirectLight,  // light that other surfaces reflect: colour bleeding, caustics
 };
 
 // What a render shows a student of its workings besides its image, when
@@ -144,6 +148,9 @@ struct RenderNeeds {
   // ("smaller shadow maps (--shadow-map-size)").
   std::string mostOfTheMemory = {};
   std::string toTakeLess = {};
+  // Whether a material that both reflects and refracts makes its rays
+  // branch in two, as Whitted's do and a path's, one direction a surface, do not.
+  bool raysBranch = true;
 };
 
 // One image synthesis algorithm. The command line, the studio, the tests and

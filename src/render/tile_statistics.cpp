@@ -1,5 +1,6 @@
 #include "render/tile_statistics.hpp"
 
+#include <algorithm>
 #include <string>
 #include <string_view>
 
@@ -10,6 +11,12 @@ constexpr std::string_view kPerRay = "_per_ray";
 
 bool endsWith(const std::string& text, std::string_view end) {
   return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+double largestOf(const std::vector<Stats>& tiles, const std::string& name) {
+  double largest = 0.0;
+  for (const Stats& tile : tiles) largest = std::max(largest, tile.value(name));
+  return largest;
 }
 
 }  // namespace
@@ -27,6 +34,12 @@ Stats combinedTileStats(const AlgorithmDescription& algorithm, const std::vector
       combined.add(name, seconds);
     else if (name == "rays_per_second")
       combined.add(name, perEach(totals.value("rays"), seconds));
+    else if (name == "vertices_per_path")
+      combined.add(name, perEach(totals.value("path_vertices"), totals.value("paths")));
+    else if (name == "samples_per_second")  // a path a sample
+      combined.add(name, perEach(totals.value("paths"), seconds));
+    else if (name == "passes" || name == "noise")  // the longest tile's, the noisiest tile's
+      combined.add(name, largestOf(tiles, name));
     else if (endsWith(name, kPerRay))
       combined.add(name, perEach(totals.value(name.substr(0, name.size() - kPerRay.size())),
                                  totals.value("rays")));

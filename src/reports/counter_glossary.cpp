@@ -107,6 +107,17 @@ constexpr std::array kMeanings = {
     Entry{"ray_pass_seconds", "seconds of the ray pass"},
     Entry{"intersection_tests_saved",
           "intersection tests fewer than the algorithm it is compared with"},
+    // Path tracing
+    Entry{"paths", "paths from the eye, one a sample"},
+    Entry{"path_vertices", "surfaces the paths met, the rays that escaped included"},
+    Entry{"vertices_per_path", "surfaces a path met, on average, the ray that escaped included"},
+    Entry{"paths_escaped", "paths whose last ray left the scene, taking the background's light"},
+    Entry{"emitter_shadow_rays", "shadow rays to points chosen on the emitting surfaces"},
+    Entry{"roulette_terminations", "paths that Russian roulette ended"},
+    Entry{"passes", "passes of a few samples a pixel that refined the image"},
+    Entry{"noise",
+          "the estimated noise left: the pixels' standard errors over the image's brightness"},
+    Entry{"samples_per_second", "samples taken per second of the passes"},
 };
 
 constexpr std::array kMeaningsAfterAnother = {

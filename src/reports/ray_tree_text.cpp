@@ -27,6 +27,22 @@ std::string numbers(std::initializer_list<float> values) {
 std::string text(const Vec2& v) { return numbers({v.x, v.y}); }
 std::string text(const Vec3& v) { return numbers({v.x, v.y, v.z}); }
 
+// How a path tracer's path went on from a vertex, and whether the roulette
+// ended it.
+void printPathOnward(std::ostream& out, const RayNode::PathVertex& vertex,
+                     const std::string& indent) {
+  if (vertex.density <= 0.0f) return;
+  out << indent << "  goes on "
+      << (vertex.singular ? "by the mirror or the glass, chance "
+                          : "by the BRDF's sample, density ")
+      << vertex.density;
+  if (vertex.endedByRoulette)
+    out << "; roulette ends it (it would go on with chance " << vertex.survival << ")";
+  else if (vertex.survival < 1.0f)
+    out << "; roulette lets it go on (chance " << vertex.survival << ", its weight divided by it)";
+  out << "\n";
+}
+
 void printRayAndItsOwn(std::ostream& out, const Scene& scene, const RayTree& tree, int index,
                        const std::string& indent) {
   const RayNode& ray = tree.rays[static_cast<std::size_t>(index)];
@@ -40,6 +56,13 @@ void printRay(std::ostream& out, const Scene& scene, const RayNode& ray,
               const std::string& indent) {
   out << indent << toString(ray.kind) << " ray from " << text(ray.origin) << " along "
       << text(ray.direction);
+  if (ray.kind == RayKind::Shadow && ray.light < 0) {
+    out << " to a point of an emitter (" << ray.distance
+        << " away): " << (ray.transmittance == Color(0.0f) ? "blocked" : "reaches it") << "\n"
+        << indent << "  f Le cos / p " << text(ray.diffuse) << ", weight " << ray.misWeight
+        << "; adds " << text(ray.contribution) << "\n";
+    return;
+  }
   if (ray.kind == RayKind::Shadow) {
     out << " to light " << ray.light << " (" << ray.distance << " away): "
         << (ray.transmittance == Color(0.0f)   ? "blocked"
@@ -58,8 +81,15 @@ void printRay(std::ostream& out, const Scene& scene, const RayNode& ray,
   }
   out << indent << "  hits " << objectName(scene, ray.object) << " at " << text(ray.point) << ", "
       << ray.distance << " away, normal " << text(ray.normal) << ", uv " << text(ray.uv) << "\n"
-      << indent << "  ambient " << text(ray.ambient) << "; adds " << text(ray.contribution)
-      << "; brings back " << text(ray.color) << "\n";
+      << indent << "  ";
+  if (ray.path) {
+    out << "emits " << text(ray.path->emitted);
+    if (ray.path->emittedWeight < 1.0f) out << " (weight " << ray.path->emittedWeight << ")";
+  } else {
+    out << "ambient " << text(ray.ambient);
+  }
+  out << "; adds " << text(ray.contribution) << "; brings back " << text(ray.color) << "\n";
+  if (ray.path) printPathOnward(out, *ray.path, indent);
 }
 
 void printRayTrees(std::ostream& out, const Scene& scene, const std::vector<RayTree>& trees,

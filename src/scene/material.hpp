@@ -28,6 +28,10 @@ struct Material {
   // directions, as the tangent of the spread's half-angle. 0 is a perfect
   // mirror or clear glass.
   float roughness = 0.0f;
+  // Le: the radiance the surface gives off by itself, on both sides: a lamp's
+  // panel or a glowing ball. The path tracer takes it as a light; the other
+  // algorithms add it to the surface's colour, as it is whatever the lights.
+  Color emission{0.0f};
 
   std::shared_ptr<const Texture> texture;      // when set, replaces color over the surface
   std::shared_ptr<const BumpMap> bump;         // when set, tilts the shading normal
@@ -37,6 +41,7 @@ struct Material {
   std::shared_ptr<const Texture> ksTexture;
 
   bool isTransparent() const { return transmission > 0.0f; }
+  bool emits() const { return emission != Color(0.0f); }
   // Whether shading reads the surface's texture coordinates and tangents:
   // for a texture, or for a map that tilts the normal.
   bool readsTextureFrame() const { return texture || ksTexture || bump || normalMap; }

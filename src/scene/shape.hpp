@@ -133,6 +133,11 @@ class Shape {
     return static_cast<std::uint64_t>(primitiveCount());
   }
 
+  // Whether tessellate()'s triangles are the surface itself at any level, as
+  // a polygon's, a box's and a still mesh's are: points chosen on them are
+  // points of the surface (the path tracer's lights, ray/emitters.hpp).
+  virtual bool tessellationIsExact() const { return false; }
+
   // Index of the shape's material in Scene::materials.
   int material() const { return material_; }
 

@@ -25,7 +25,7 @@ Color localLight(const Scene& scene, const Material& material, const SurfaceColo
                  const Vec3& position, const Vec3& surfaceNormal, const Vec3& shadingNormal,
                  const Vec3& eye, const LightVisibility* shadows) {
   const Vec3 toViewer = glm::normalize(eye - position);
-  Color color = phongAmbient(material, colors, scene.ambient);
+  Color color = phongUnlit(material, colors, scene.ambient);
   forEachLightReaching(scene, position, surfaceNormal, shadows,
                        [&](const LightSample& sample, const Color& reaching) {
                          color += reaching *
@@ -39,7 +39,7 @@ SplitLight splitLocalLight(const Scene& scene, const Material& material, const V
   const Vec3 toViewer = glm::normalize(eye - position);
   const SurfaceColors byColor{Color(1.0f), Color(0.0f)}, byKs{Color(0.0f), Color(1.0f)};
   SplitLight split{phongAmbient(material, byColor, scene.ambient),
-                   phongAmbient(material, byKs, scene.ambient)};
+                   phongAmbient(material, byKs, scene.ambient), material.emission};
   forEachLightReaching(
       scene, position, normal, shadows, [&](const LightSample& sample, const Color& reaching) {
         split.byColor += reaching * phongDirect(material, byColor, normal, toViewer, sample);

@@ -36,13 +36,15 @@ Color localLight(const Scene& scene, const Material& material, const SurfaceColo
                  const Vec3& position, const Vec3& surfaceNormal, const Vec3& shadingNormal,
                  const Vec3& eye, const LightVisibility* shadows = nullptr);
 
-// The same light as C * byColor + ks * byKs: the model is linear in C and ks.
+// The same light as C * byColor + ks * byKs + emitted: the model is linear
+// in C and ks.
 struct SplitLight {
   Color byColor{0.0f};
   Color byKs{0.0f};
+  Color emitted{0.0f};
 
   Color with(const SurfaceColors& colors) const {
-    return colors.color * byColor + colors.ks * byKs;
+    return colors.color * byColor + colors.ks * byKs + emitted;
   }
 };
 

@@ -26,6 +26,11 @@ Color phongAmbient(const Material& material, const SurfaceColors& surface,
   return ambientLight * (material.ka * (1.0f - material.transmission)) * surface.color;
 }
 
+Color phongUnlit(const Material& material, const SurfaceColors& surface,
+                 const Color& ambientLight) {
+  return material.emission + phongAmbient(material, surface, ambientLight);
+}
+
 Color phongDirect(const Material& material, const SurfaceColors& surface, const Vec3& normal,
                   const Vec3& toViewer, const LightSample& light) {
   const float cosIncidence = glm::dot(normal, light.toLight);

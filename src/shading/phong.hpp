@@ -2,9 +2,11 @@
 // computer generated pictures", CACM 1975), the one shading model that every
 // algorithm in RISE calls:
 //
-//   I = Ia ka C (1 - t)  +  sum over lights  Il (kd C (1 - t) max(0, N.L) + ks max(0, R.V)^n)
+//   I = Le  +  Ia ka C (1 - t)  +  sum over lights  Il (kd C (1 - t) max(0, N.L) + ks max(0,
+//   R.V)^n)
 //
-// C is the surface colour and ks the specular coefficient at the point (a
+// Le is the light the surface emits (Material::emission, zero but for a
+// lamp), C the surface colour and ks the specular coefficient at the point (a
 // texture varies C over the surface, a ks texture ks, channel by channel), t
 // the material's transmission (light that passes through a surface is not
 // also reflected diffusely), N the unit normal on the viewer's side, L the
@@ -25,6 +27,9 @@ namespace rise {
 // The ambient term Ia ka C (1 - t).
 Color phongAmbient(const Material& material, const SurfaceColors& surface,
                    const Color& ambientLight);
+
+// What the surface shows whatever the lights: Le + Ia ka C (1 - t).
+Color phongUnlit(const Material& material, const SurfaceColors& surface, const Color& ambientLight);
 
 // One light's diffuse and specular terms, given its sample at the surface.
 // Zero when the light is behind the surface (N.L <= 0).

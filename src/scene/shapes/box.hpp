@@ -18,6 +18,7 @@ class Box final : public Shape {
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+  bool tessellationIsExact() const override { return true; }
 
  private:
   Vec3 min_;

@@ -24,6 +24,7 @@ class ConvexPolygon final : public Shape {
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+  bool tessellationIsExact() const override { return true; }
 
  private:
   std::vector<Vec3> vertices_;

@@ -58,6 +58,7 @@ class Triangle final : public Shape {
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+  bool tessellationIsExact() const override { return true; }
   bool primitiveTriangle(int primitive, std::array<Vec3, 3>& corners) const override;
 
  private:

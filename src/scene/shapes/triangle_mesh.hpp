@@ -22,6 +22,7 @@ class TriangleMesh final : public Shape {
   SurfacePoint surfaceAt(const Ray& ray, const Hit& hit) const override;
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
+  bool tessellationIsExact() const override { return true; }
 
   // Each triangle is a primitive, so that an acceleration structure can
   // bound and test the triangles one by one.
