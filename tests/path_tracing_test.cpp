@@ -5,6 +5,7 @@
 // root of the samples.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -213,6 +214,19 @@ TEST(PathTracing, StopsAtTheNoiseAskedForAndKeepsItsVariance) {
     s.progression.noiseTarget = 0.05;
   });
   EXPECT_LT(meanOf(more.buffers.at("variance")), meanOf(variance));
+}
+
+// A time budget ends the passes before the one that would pass it.
+TEST(PathTracing, StopsWithinItsTimeLimit) {
+  const auto start = std::chrono::steady_clock::now();
+  const RenderResult result = render(litRoom(), "path-tracing", [](auto& s) {
+    s.progression.samples = kMostSamples;
+    s.progression.timeLimit = 0.3;
+  });
+  const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+  EXPECT_LT(seconds.count(), 1.5);
+  EXPECT_LT(result.stats.value("samples_per_pixel"), kMostSamples);
+  EXPECT_GE(result.stats.value("passes"), 2);
 }
 
 }  // namespace
