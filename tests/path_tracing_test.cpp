@@ -64,6 +64,24 @@ TEST(PathTracing, TheFurnaceGlowsAsTheSeriesOfItsBouncesSums) {
     }
 }
 
+// A lossless mirror or glass ball in the furnace takes nothing from its
+// light and adds nothing: Fresnel's split between reflection and refraction
+// only shares the light out.
+TEST(PathTracing, AMirrorOrAGlassBallInTheFurnaceDisappears) {
+  for (const std::string ball :
+       {"{color: [1, 1, 1], ka: 0, kd: 0, reflection: 1}",
+        "{color: [1, 1, 1], ka: 0, kd: 0, transmission: 1, ior: 1.5}"}) {
+    std::string scene = furnace(0.5f, 0.5f);
+    scene.insert(scene.find("objects:"), "  ball: " + ball + "\n");
+    scene += "  - sphere: {center: [0, 0, 3], radius: 1.5, material: ball}\n";
+    const RenderResult result = render(scene, "path-tracing", [](auto& s) {
+      s.maxDepth = 64;
+      s.progression.samples = 64;
+    });
+    EXPECT_NEAR(meanOf(result.image), 1.0, 0.01) << ball;
+  }
+}
+
 // The depth cuts the series: d surfaces give Le (1 + ... + a^(d-1)).
 TEST(PathTracing, AShorterPathSumsFewerBounces) {
   const RenderResult result = render(furnace(0.5f, 0.5f), "path-tracing", [](auto& s) {
