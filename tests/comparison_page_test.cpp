@@ -142,6 +142,7 @@ TEST_F(ComparisonPageFiles, SaysWhyTheHybridIsSlowerWhereItIs) {
 TEST_F(ComparisonPageFiles, SaysAPartOfTheTimeTooSmallToMeasureIsSo) {
   Stats stats;
   stats.add("render_seconds", 0.1);
+  stats.add("shadow_map_texels", 6.0 * 1024 * 1024);
   stats.add("shadow_map_seconds", 0.03);
   stats.add("visible_surface_seconds", 0.0);
   stats.add("shading_seconds", 0.05);
@@ -152,6 +153,31 @@ TEST_F(ComparisonPageFiles, SaysAPartOfTheTimeTooSmallToMeasureIsSo) {
                       "visible surfaces, 0.05 s shading, 0.02 s preparing"),
             std::string::npos)
       << html;
+}
+
+// A scene lit by emitting surfaces alone has no light that casts shadows
+// by maps or shadow rays: the captions say so.
+TEST_F(ComparisonPageFiles, SaysWhenNoLightCastsShadows) {
+  Stats mapped;
+  mapped.add("render_seconds", 0.1);
+  mapped.add("shadow_map_texels", 0.0);
+  mapped.add("shadow_map_seconds", 0.0);
+  mapped.add("visible_surface_seconds", 0.04);
+  mapped.add("shading_seconds", 0.05);
+  Stats traced;
+  traced.add("render_seconds", 0.1);
+  traced.add("shadow_rays", 0.0);
+  const std::vector<ComparedRender> renders = {
+      {&findRenderer("z-buffer")->description(), {Image(2, 2), {}, mapped}},
+      {&findRenderer("ray-tracing")->description(), {Image(2, 2), {}, traced}}};
+  const std::string html = page(renders, "s.yaml");
+  std::size_t said = 0;
+  for (std::size_t at = html.find("no shadows: no light casts them"); at != std::string::npos;
+       at = html.find("no shadows: no light casts them", at + 1))
+    ++said;
+  EXPECT_EQ(said, 2u) << html;
+  EXPECT_EQ(html.find(" s drawing the shadow maps"), std::string::npos) << html;
+  EXPECT_EQ(html.find("of it drawing the shadow maps"), std::string::npos) << html;
 }
 
 }  // namespace

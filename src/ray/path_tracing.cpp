@@ -222,7 +222,7 @@ class Path {
         scattering.sample(values_.next2D(), values_.next1D());
     if (!sample || sample->weight == Color(0.0f)) return color;
     if (tree_) [[unlikely]] {
-      RayNode::PathVertex& vertex = tree_->pathVertex();
+      PathVertex& vertex = tree_->pathVertex();
       vertex.density = sample->pdf;
       vertex.singular = sample->singular;
     }
@@ -231,7 +231,7 @@ class Path {
       const float survival = std::min(1.0f, largestChannel(weight) * largestChannel(throughput));
       const bool ends = values_.next1D() >= survival;
       if (tree_) [[unlikely]] {
-        RayNode::PathVertex& vertex = tree_->pathVertex();
+        PathVertex& vertex = tree_->pathVertex();
         vertex.survival = survival;
         vertex.endedByRoulette = ends;
       }

@@ -70,7 +70,7 @@ void RayTreeBuilder::shadow(const Ray& ray, const Light& light, float distance,
   add(std::move(node));
 }
 
-RayNode::PathVertex& RayTreeBuilder::pathVertex() {
+PathVertex& RayTreeBuilder::pathVertex() {
   if (!current().path) current().path.emplace();
   return *current().path;
 }

@@ -30,7 +30,7 @@ class RayTreeBuilder {
   [[gnu::noinline]] void shadow(const Ray& ray, const Light& light, float distance,
                                 const Color& visible, const Color& diffuse, const Color& specular);
   // The path tracer's record of the current ray's surface, to fill in.
-  [[gnu::noinline]] RayNode::PathVertex& pathVertex();
+  [[gnu::noinline]] PathVertex& pathVertex();
   // A shadow ray from the current ray's surface to a point of an emitter,
   // `distance` away, blocked or not: `lit` (f Le cos / p) weighed by `weight`.
   [[gnu::noinline]] void emitterShadow(const Ray& ray, float distance, bool reaches,

@@ -17,10 +17,25 @@ enum class RayKind { Primary, Shadow, Reflection, Refraction };
 
 const char* toString(RayKind kind);  // "primary", "shadow", ...
 
+// What a path tracer records at a hit: the light the surface emits as
+// counted (times the weight multiple importance sampling gave it against a
+// shadow ray), the density of the direction the path went on in per
+// steradian (for a mirror or glass, the chance of its lobe), and Russian
+// roulette's verdict.
+struct PathVertex {
+  Color emitted{0.0f};
+  float emittedWeight = 1.0f;
+  float density = 0.0f;
+  bool singular = false;
+  float survival = 1.0f;
+  bool endedByRoulette = false;
+};
+
 // A ray of the tree. `weight` is what the colour it brings back is
 // multiplied by on its way to the pixel: 1 for the primary ray, times the
 // material's reflection for a mirror ray, times its transmission and colour
-// for a refracted one. `contribution` is what the ray itself adds to the
+// for a refracted one, and for a path the product of f cos / p on the way
+// (roulette included). `contribution` is what the ray itself adds to the
 // pixel (weight times its ambient term or the background; for a shadow ray,
 // the parent's weight times the light's Phong terms that got through);
 // `color` is everything it brings back, its children's included, before its
@@ -52,20 +67,9 @@ struct RayNode {
   Color diffuse{0.0f};
   Color specular{0.0f};
 
-  // Path tracing. At a hit: the light the surface emits as counted (times the
-  // weight multiple importance sampling gave it against a shadow ray), the
-  // density of the direction the path went on in per steradian (for a mirror
-  // or glass, the chance of its lobe), and Russian roulette's verdict. For a
-  // shadow ray to an emitter (light -1): f Le cos / p of the point it aims
-  // at in `diffuse`, and its weight against the BRDF's sample.
-  struct PathVertex {
-    Color emitted{0.0f};
-    float emittedWeight = 1.0f;
-    float density = 0.0f;
-    bool singular = false;
-    float survival = 1.0f;
-    bool endedByRoulette = false;
-  };
+  // Path tracing: see PathVertex. For a shadow ray to an emitter (light
+  // -1): f Le cos / p of the point it aims at in `diffuse`, and its weight
+  // against the BRDF's sample.
   std::optional<PathVertex> path;
   float misWeight = 1.0f;
 };

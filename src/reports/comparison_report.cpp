@@ -121,9 +121,13 @@ std::string counterWord(std::string_view name) {
 // The shadows an image has, as its caption says.
 std::string shadowsOf(const ComparedRender& render) {
   const Stats& stats = render.result.stats;
-  if (render.algorithm->family != Family::VisibleSurface) return "shadows by shadow rays";
-  if (findValue(stats, "shadow_map_texels")) return "shadows by shadow maps";
-  if (findValue(stats, "shadow_volume_faces")) return "shadows by shadow volumes";
+  constexpr const char* kNoLight = "no shadows: no light casts them";
+  if (render.algorithm->family != Family::VisibleSurface)
+    return stats.value("shadow_rays") > 0.0 ? "shadows by shadow rays" : kNoLight;
+  if (stats.value("shadow_map_texels") > 0.0) return "shadows by shadow maps";
+  if (stats.value("shadow_volume_faces") > 0.0) return "shadows by shadow volumes";
+  if (findValue(stats, "shadow_map_texels") || findValue(stats, "shadow_volume_faces"))
+    return kNoLight;
   return "no shadows (--shadows map or volume draws them)";
 }
 
@@ -148,8 +152,10 @@ std::string timeSplitOf(const ComparedRender& render) {
         (seconds < kSmallestShare * total ? "under 0.5% of it" : formatNumber(seconds) + " s") +
         " " + what + ", ";
   };
-  part("shadow_map_seconds", "drawing the shadow maps");
-  part("shadow_volume_seconds", "building the shadow volumes");
+  // A scene without lights has shadow maps or volumes of none.
+  if (stats.value("shadow_map_texels") > 0.0) part("shadow_map_seconds", "drawing the shadow maps");
+  if (stats.value("shadow_volume_faces") > 0.0)
+    part("shadow_volume_seconds", "building the shadow volumes");
   part("visible_surface_seconds", "finding the visible surfaces");
   part("shading_seconds", "shading");
   return "Of its " + formatNumber(total) + " s: " + split + formatNumber(std::max(rest, 0.0)) +

@@ -29,8 +29,7 @@ std::string text(const Vec3& v) { return numbers({v.x, v.y, v.z}); }
 
 // How a path tracer's path went on from a vertex, and whether the roulette
 // ended it.
-void printPathOnward(std::ostream& out, const RayNode::PathVertex& vertex,
-                     const std::string& indent) {
+void printPathOnward(std::ostream& out, const PathVertex& vertex, const std::string& indent) {
   if (vertex.density <= 0.0f) return;
   out << indent << "  goes on "
       << (vertex.singular ? "by the mirror or the glass, chance "

@@ -25,6 +25,7 @@ class MappedShape final : public Shape {
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
   std::uint64_t tessellatedTriangles(int level) const override;
+  bool tessellationIsExact() const override { return shape_->tessellationIsExact(); }
 
   int primitiveCount() const override;
   Bounds3 primitiveBounds(int primitive) const override;

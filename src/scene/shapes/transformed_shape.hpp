@@ -22,6 +22,8 @@ class TransformedShape final : public Shape {
   Bounds3 bounds() const override;
   void tessellate(const TessellationSettings& settings, Tessellation& out) const override;
   std::uint64_t tessellatedTriangles(int level) const override;
+  // An affine map keeps flat triangles flat.
+  bool tessellationIsExact() const override { return shape_->tessellationIsExact(); }
 
   // The primitives of the shape inside, bounded in the world and tested in
   // the shape's own space.
