@@ -68,9 +68,8 @@ TEST(PathTracing, TheFurnaceGlowsAsTheSeriesOfItsBouncesSums) {
 // light and adds nothing: Fresnel's split between reflection and refraction
 // only shares the light out.
 TEST(PathTracing, AMirrorOrAGlassBallInTheFurnaceDisappears) {
-  for (const std::string ball :
-       {"{color: [1, 1, 1], ka: 0, kd: 0, reflection: 1}",
-        "{color: [1, 1, 1], ka: 0, kd: 0, transmission: 1, ior: 1.5}"}) {
+  for (const std::string ball : {"{color: [1, 1, 1], ka: 0, kd: 0, reflection: 1}",
+                                 "{color: [1, 1, 1], ka: 0, kd: 0, transmission: 1, ior: 1.5}"}) {
     std::string scene = furnace(0.5f, 0.5f);
     scene.insert(scene.find("objects:"), "  ball: " + ball + "\n");
     scene += "  - sphere: {center: [0, 0, 3], radius: 1.5, material: ball}\n";
@@ -245,6 +244,31 @@ TEST(PathTracing, StopsWithinItsTimeLimit) {
   EXPECT_LT(seconds.count(), 1.5);
   EXPECT_LT(result.stats.value("samples_per_pixel"), kMostSamples);
   EXPECT_GE(result.stats.value("passes"), 2);
+}
+
+// A front end watching (the studio) sees the image refine: after every tile
+// of every pass, the mean of the samples so far, the last of which is the
+// image itself.
+TEST(PathTracing, ShowsTheImageSoFarAfterEveryTileOfEveryPass) {
+  struct Watching final : RenderObserver {
+    void onPixelsDone(const PixelRect& region, const Image& image) override {
+      ++shown;
+      if (seen.pixels().empty()) seen = Image(image.width(), image.height());
+      for (int y = region.y0; y < region.y1; ++y)
+        for (int x = region.x0; x < region.x1; ++x) seen.at(x, y) = image.at(x, y);
+    }
+    int shown = 0;
+    Image seen;
+  } watching;
+  const Scene scene = loadScene(litRoom(), "test.yaml");
+  RenderSettings settings;
+  settings.width = scene.image.width;
+  settings.height = scene.image.height;
+  settings.threads = 2;
+  settings.progression.samples = 12;
+  const RenderResult result = findRenderer("path-tracing")->render(scene, settings, watching);
+  EXPECT_EQ(watching.shown, 3 * 2);  // three passes of the image's two tiles
+  EXPECT_LT(rmse(watching.seen, result.image), 1e-6);
 }
 
 }  // namespace
