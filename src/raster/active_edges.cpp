@@ -5,13 +5,6 @@
 
 namespace rise {
 
-namespace {
-
-// A corner with no place on the screen (NaN) bounds no edge.
-bool hasNoPlace(const Vec3& corner) { return std::isnan(corner.x) || std::isnan(corner.y); }
-
-}  // namespace
-
 ActiveEdgeList::ActiveEdgeList(const ScreenGeometry& screen, const PixelRect& band,
                                std::span<const int> polygons, EdgeListCounters& counters)
     : band_(band), polygons_(polygons), counters_(counters), edgeTable_(band.y1 - band.y0) {

@@ -4,12 +4,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/math.hpp"
+
 namespace rise {
 
 // Far beyond any image's side, and still exactly a whole number as a float
 // and an int: a corner projected towards infinity (a shadow volume's far
 // side) still names a row or column of ints.
 inline constexpr float kFarthestPixel = 1 << 24;
+
+// A corner with no place on the screen (NaN) bounds no pixels and no edges.
+inline bool hasNoPlace(const Vec3& corner) { return std::isnan(corner.x) || std::isnan(corner.y); }
 
 // The first centre at or past `low`. A position with no place (NaN) lies past
 // every pixel, so that the range it starts holds none.

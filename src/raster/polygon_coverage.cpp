@@ -12,8 +12,8 @@ namespace rise {
 PixelRect pixelBoundsOf(std::span<const Vec3> corners) {
   Vec2 low(kInfinity), high(-kInfinity);
   for (const Vec3& corner : corners) {
-    // A corner with no place (NaN) covers nothing rather than everything.
-    if (std::isnan(corner.x) || std::isnan(corner.y)) continue;
+    // It covers nothing rather than everything.
+    if (hasNoPlace(corner)) continue;
     low = glm::min(low, Vec2(corner));
     high = glm::max(high, Vec2(corner));
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "core/elapsed.hpp"
 #include "core/random.hpp"
@@ -41,7 +42,7 @@ class Passes final : public ProgressivePass, public RenderObserver {
     pass_ = pass;
     passSamples_ = samples;
   }
-  void add(const RenderResult& passResult);
+  void add(RenderResult passResult);
   double noise() const;
   RenderResult result(double seconds) const;
 
@@ -93,21 +94,21 @@ class Passes final : public ProgressivePass, public RenderObserver {
   int passesAsked_, pass_ = 0, passSamples_ = 0, samplesTaken_ = 0;
 };
 
-void Passes::add(const RenderResult& passResult) {
+void Passes::add(RenderResult passResult) {
   const PixelRect area = settings_.area();
   for (int y = area.y0; y < area.y1; ++y)
     for (int x = area.x0; x < area.x1; ++x)
       sum_.at(x, y) +=
           static_cast<float>(passSamples_) * passResult.image.at(x - area.x0, y - area.y0);
+  stats_.accumulate(passResult.stats);
+  samplesTaken_ += passSamples_;
   if (pass_ == 0) {
-    first_ = passResult;
+    first_ = std::move(passResult);
   } else if (const auto cost = passResult.buffers.find("cost"); cost != passResult.buffers.end()) {
     Image& total = first_.buffers.at("cost");
     for (int y = 0; y < total.height(); ++y)
       for (int x = 0; x < total.width(); ++x) total.at(x, y) += cost->second.at(x, y);
   }
-  stats_.accumulate(passResult.stats);
-  samplesTaken_ += passSamples_;
 }
 
 double Passes::noise() const {
@@ -164,7 +165,7 @@ RenderResult renderProgressively(const RenderSettings& settings, RenderObserver&
     RenderResult passResult;
     lastPassSeconds = secondsOf([&] { passResult = renderPass(passed, passes); });
     if (observer.cancelled()) return passResult;
-    passes.add(passResult);
+    passes.add(std::move(passResult));
     const double elapsed = secondsSince(start);
     const Progression& asked = settings.progression;
     if (asked.timeLimit > 0.0 && elapsed + lastPassSeconds > asked.timeLimit) break;

@@ -6,12 +6,6 @@
 #include "core/warps.hpp"
 
 namespace rise {
-namespace {
-
-float largestChannel(const Color& color) { return std::max({color.r, color.g, color.b}); }
-
-}  // namespace
-
 float fresnelDielectric(float cosIncidence, float eta) {
   const float sinSquaredRefracted = (1.0f - cosIncidence * cosIncidence) / (eta * eta);
   if (sinSquaredRefracted >= 1.0f) return 1.0f;
@@ -34,8 +28,7 @@ Scattering::Scattering(const Material& material, const SurfaceColors& colors, co
       reflection_(material.reflection),
       transmission_(material.transmission),
       tint_(colors.color) {
-  const float total =
-      largestChannel(diffuse_) + largestChannel(glossy_) + reflection_ + transmission_;
+  const float total = maxComponent(diffuse_) + maxComponent(glossy_) + reflection_ + transmission_;
   if (total <= 0.0f) return;
   const float scale = std::min(1.0f, 1.0f / total);
   diffuse_ *= scale;
@@ -43,8 +36,8 @@ Scattering::Scattering(const Material& material, const SurfaceColors& colors, co
   reflection_ *= scale;
   transmission_ *= scale;
   const float scaledTotal = total * scale;
-  diffuseShare_ = largestChannel(diffuse_) / scaledTotal;
-  glossyShare_ = largestChannel(glossy_) / scaledTotal;
+  diffuseShare_ = maxComponent(diffuse_) / scaledTotal;
+  glossyShare_ = maxComponent(glossy_) / scaledTotal;
   mirrorShare_ = reflection_ / scaledTotal;
   glassShare_ = transmission_ / scaledTotal;
 }
