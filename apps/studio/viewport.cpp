@@ -286,14 +286,15 @@ void Viewport::renderScene(const Scene& scene, int selected, int width, int heig
   glDisable(GL_POLYGON_OFFSET_FILL);
 
   glUniform1i(glGetUniformLocation(program_, "unlit"), 1);
-  if (selected >= 0 && selected < static_cast<int>(shapeVertices_.size())) {
-    const auto [first, count] = shapeVertices_[static_cast<std::size_t>(selected)];
-    glDisableVertexAttribArray(2);
-    glVertexAttrib3f(2, 1.0f, 0.55f, 0.1f);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  glDisableVertexAttribArray(2);
+  glVertexAttrib3f(2, 1.0f, 0.55f, 0.1f);
+  glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+  for (int shape = 0; shape < static_cast<int>(shapeVertices_.size()); ++shape) {
+    if (scene.objectOf(shape) != selected) continue;
+    const auto [first, count] = shapeVertices_[static_cast<std::size_t>(shape)];
     glDrawArrays(GL_TRIANGLES, first, count);
-    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
+  glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   bindVertexLayout(extraLines_);
   glDrawArrays(GL_LINES, 0, extraLineVertices_);
   bindVertexLayout(lines_);

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -22,34 +23,18 @@
 #include <system_error>
 #include <vector>
 
-#include "core/shared_library.hpp"
 #include "core/text.hpp"
+#include "io/assimp_library.hpp"
+#include "io/assimp_scene_checks.hpp"
 #include "io/checked_model_files.hpp"
 #include "io/file_limits.hpp"
 #include "io/model_headers.hpp"
+#include "io/model_materials.hpp"
 #include "scene/vertex_normals.hpp"
 
 namespace rise {
 
 namespace {
-
-// Assimp's functions (its C interface), from its library, loaded when the
-// first model is read: a scene without one does not pay for loading it.
-struct AssimpFunctions {
-  SharedLibrary library{RISE_ASSIMP_LIBRARY};
-  RISE_LIBRARY_FUNCTION(library, aiCreatePropertyStore);
-  RISE_LIBRARY_FUNCTION(library, aiSetImportPropertyInteger);
-  RISE_LIBRARY_FUNCTION(library, aiReleasePropertyStore);
-  RISE_LIBRARY_FUNCTION(library, aiImportFileExWithProperties);
-  RISE_LIBRARY_FUNCTION(library, aiApplyPostProcessing);
-  RISE_LIBRARY_FUNCTION(library, aiReleaseImport);
-  RISE_LIBRARY_FUNCTION(library, aiGetErrorString);
-};
-
-const AssimpFunctions& loadedAssimp() {
-  static const AssimpFunctions functions;
-  return functions;
-}
 
 // The scene Assimp read, released through its library.
 struct SceneRelease {
@@ -123,106 +108,6 @@ void checkHeader(const std::filesystem::path& path) {
   if (extension == ".off")
     checkOffHeader(readStart(path, kLongestHeader), std::filesystem::file_size(path));
   if (extension == ".md2") checkedMd2Header(bytesOf(readStart(path, kLargestModelFile)));
-}
-
-// Assimp's messages, on one line, with single spaces.
-std::string tidied(const std::string& message) {
-  std::string result;
-  for (char c : message) {
-    const bool space = std::isspace(static_cast<unsigned char>(c)) != 0;
-    if (space && (result.empty() || result.back() == ' ')) continue;
-    result.push_back(space ? ' ' : c);
-  }
-  while (!result.empty() && result.back() == ' ') result.pop_back();
-  return result.empty() ? "the model loader failed without saying why" : result;
-}
-
-// What Assimp's message means for the person who chose the file, with
-// Assimp's own words after it for whoever looks deeper.
-std::string explained(const std::string& message) {
-  const auto with = [&](std::string_view meaning) {
-    return std::string(meaning) + " (Assimp: " + message + ")";
-  };
-  const auto says = [&](std::string_view words) {
-    return message.find(words) != std::string::npos;
-  };
-  if (says("is a LINE but") || says("is a POINT but"))
-    return with("a face has fewer than 3 corners (a line or a point) among faces of 3 or more");
-  if (says("Mesh contains no faces")) return with("the file has no faces");
-  if (says("mNumMeshes is 0")) return with("the file has no meshes");
-  if (says("index out of range") || (says("mIndices") && says("out of range")))
-    return with("a face refers to a vertex that the file does not have");
-  if (says("bad_alloc"))
-    return with("reading it needs more memory than there is; is the file corrupt?");
-  if (message.starts_with("Validation failed"))
-    return with("the model's data does not hold together, as in a corrupt file");
-  return with("the file cannot be read as a model");
-}
-
-// Sets the kinds of faces (points, lines, triangles, polygons) each mesh
-// has to those its faces have. A loader may leave them wrong (a PLY file that
-// declares its faces twice leaves faces of no corners flagged as polygons),
-// and Assimp's triangulation then stops the program on an assertion rather
-// than report an error. Faces of no corners are refused.
-void checkFacesAndTheirTypes(aiScene& scene) {
-  for (unsigned int i = 0; i < scene.mNumMeshes; ++i) {
-    aiMesh& mesh = *scene.mMeshes[i];
-    unsigned int types = 0;
-    for (unsigned int face = 0; face < mesh.mNumFaces; ++face) {
-      switch (mesh.mFaces[face].mNumIndices) {
-        case 0:
-          throw MeshFileError("face " + std::to_string(face) +
-                              " has no corners, as in a corrupt file");
-        case 1:
-          types |= aiPrimitiveType_POINT;
-          break;
-        case 2:
-          types |= aiPrimitiveType_LINE;
-          break;
-        case 3:
-          types |= aiPrimitiveType_TRIANGLE;
-          break;
-        default:
-          types |= aiPrimitiveType_POLYGON;
-      }
-    }
-    mesh.mPrimitiveTypes = types;
-  }
-}
-
-// Whether Assimp's FindInvalidData step drops the mesh for its points: one
-// with a coordinate that is not finite, or, where faces use more than one
-// point, all of them the same. Its rule as Assimp 5.2 applies it, comparing
-// each point used with the one before it in the file, used or not.
-bool pointsAssimpDrops(const aiMesh& mesh) {
-  if (mesh.mVertices == nullptr) return false;
-  std::vector<bool> unused(mesh.mNumVertices, mesh.mNumFaces != 0);
-  for (unsigned int face = 0; face < mesh.mNumFaces; ++face)
-    for (unsigned int corner = 0; corner < mesh.mFaces[face].mNumIndices; ++corner)
-      unused[mesh.mFaces[face].mIndices[corner]] = false;
-  unsigned int used = 0;
-  bool differ = false;
-  for (unsigned int i = 0; i < mesh.mNumVertices; ++i) {
-    if (unused[i]) continue;
-    ++used;
-    const aiVector3D& point = mesh.mVertices[i];
-    if (!std::isfinite(point.x) || !std::isfinite(point.y) || !std::isfinite(point.z)) return true;
-    if (i > 0 && point != mesh.mVertices[i - 1]) differ = true;
-  }
-  return used > 1 && !differ;
-}
-
-// FindInvalidData fails when it drops every mesh, and aiApplyPostProcessing
-// in Assimp 5.2 then frees the scene a second time and crashes: that file is
-// refused before.
-void checkSomeMeshKeepsItsPoints(const aiScene& scene) {
-  const std::span<aiMesh* const> meshes(scene.mMeshes, scene.mNumMeshes);
-  if (meshes.empty() || !std::all_of(meshes.begin(), meshes.end(),
-                                     [](const aiMesh* mesh) { return pointsAssimpDrops(*mesh); }))
-    return;
-  throw MeshFileError(
-      "no mesh of the file has points to draw: in each, a coordinate is not a number, or every "
-      "point that its faces use is the same");
 }
 
 // Assimp's C interface keeps its last error in one string for all threads:
@@ -302,45 +187,77 @@ MeshGeometry geometryOf(const aiMesh& mesh, bool joinVertices) {
   return mesh.HasNormals() ? geometry : withVertexNormals(geometry, kCreaseAngleDegrees);
 }
 
+// Where the triangles of one of the file's meshes go: the one model, or the
+// part of the model that wears the mesh's material.
+using PartOfMesh = std::function<MeshGeometry&(const aiMesh&)>;
+
 // Appends the meshes of `node` and of the nodes under it, each placed by the
 // transforms from the root down to its node.
 void appendNode(const aiScene& scene, const aiNode& node, const Mat4& parentToFile,
-                bool joinVertices, MeshGeometry& model) {
+                bool joinVertices, const PartOfMesh& partOf) {
   const Mat4 nodeToFile = parentToFile * toMat4(node.mTransformation);
   for (unsigned int i = 0; i < node.mNumMeshes; ++i) {
     if (node.mMeshes[i] >= scene.mNumMeshes)
       throw MeshFileError("a node refers to a mesh that the file does not have");
-    append(model,
-           transformed(geometryOf(*scene.mMeshes[node.mMeshes[i]], joinVertices), nodeToFile));
+    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
+    append(partOf(mesh), transformed(geometryOf(mesh, joinVertices), nodeToFile));
   }
   for (unsigned int i = 0; i < node.mNumChildren; ++i)
-    appendNode(scene, *node.mChildren[i], nodeToFile, joinVertices, model);
+    appendNode(scene, *node.mChildren[i], nodeToFile, joinVertices, partOf);
 }
 
-MeshGeometry readModel(const std::filesystem::path& path, int md2Keyframe) {
+void checkPoints(const MeshGeometry& geometry) {
+  if (!std::all_of(geometry.positions.begin(), geometry.positions.end(),
+                   [](const Vec3& v) { return isFinite(v); }))
+    throw MeshFileError("a vertex has a coordinate that is not a finite number");
+}
+
+AssimpScene readScene(const std::filesystem::path& path, int md2Keyframe) {
   checkReadable(path);
   checkFormatIsSupported(path);
   checkHeader(path);
-  const AssimpFunctions& assimp = loadedAssimp();
-  const AssimpScene read = readWithAssimp(assimp, path, md2Keyframe);
-  const aiScene& scene = *read;
+  return readWithAssimp(loadedAssimp(), path, md2Keyframe);
+}
+
+MeshGeometry readModel(const std::filesystem::path& path, int md2Keyframe) {
+  const AssimpScene scene = readScene(path, md2Keyframe);
   MeshGeometry model;
-  if (scene.mRootNode != nullptr)
-    appendNode(scene, *scene.mRootNode, Mat4(1.0f), !isMd2File(path), model);
+  if (scene->mRootNode != nullptr)
+    appendNode(*scene, *scene->mRootNode, Mat4(1.0f), !isMd2File(path),
+               [&](const aiMesh&) -> MeshGeometry& { return model; });
   if (model.triangles.empty()) throw MeshFileError("the file has no triangles");
-  if (!std::all_of(model.positions.begin(), model.positions.end(),
-                   [](const Vec3& v) { return isFinite(v); }))
-    throw MeshFileError("a vertex has a coordinate that is not a finite number");
+  checkPoints(model);
   return model;
 }
 
-}  // namespace
+std::vector<ModelPart> readModelParts(const std::filesystem::path& path) {
+  const AssimpScene scene = readScene(path, 0);
+  std::vector<MeshGeometry> byMaterial(std::max(scene->mNumMaterials, 1u));
+  if (scene->mRootNode != nullptr)
+    appendNode(
+        *scene, *scene->mRootNode, Mat4(1.0f), !isMd2File(path),
+        [&](const aiMesh& mesh) -> MeshGeometry& {
+          return byMaterial[mesh.mMaterialIndex < byMaterial.size() ? mesh.mMaterialIndex : 0];
+        });
+  std::vector<ModelPart> parts;
+  for (std::size_t i = 0; i < byMaterial.size(); ++i) {
+    if (byMaterial[i].triangles.empty()) continue;
+    checkPoints(byMaterial[i]);
+    std::optional<ModelMaterial> material;
+    if (i < scene->mNumMaterials && scene->mMaterials[i] != nullptr)
+      material = readModelMaterial(loadedAssimp(), *scene->mMaterials[i]);
+    parts.push_back({std::move(byMaterial[i]), std::move(material)});
+  }
+  if (parts.empty()) throw MeshFileError("the file has no triangles");
+  return parts;
+}
 
-MeshGeometry loadMeshFile(const std::filesystem::path& path, int md2Keyframe) {
-  // Assimp reports its failures by returning no scene, but a corrupt count can
-  // still make it ask for more memory than there is.
+// Assimp reports its failures by returning no scene, but a corrupt count can
+// still make it ask for more memory than there is.
+template <typename Read>
+auto withFailuresExplained(const Read& read) {
   try {
-    return readModel(path, md2Keyframe);
+    return read();
   } catch (const MeshFileError&) {
     throw;
   } catch (const std::bad_alloc&) {
@@ -348,6 +265,16 @@ MeshGeometry loadMeshFile(const std::filesystem::path& path, int md2Keyframe) {
   } catch (const std::exception& error) {
     throw MeshFileError(explained(tidied(error.what())));
   }
+}
+
+}  // namespace
+
+MeshGeometry loadMeshFile(const std::filesystem::path& path, int md2Keyframe) {
+  return withFailuresExplained([&] { return readModel(path, md2Keyframe); });
+}
+
+std::vector<ModelPart> loadModelParts(const std::filesystem::path& path) {
+  return withFailuresExplained([&] { return readModelParts(path); });
 }
 
 std::optional<std::filesystem::path> findMd2Skin(const std::filesystem::path& model) {

@@ -1,8 +1,9 @@
 // Triangle meshes read from model files through the Open Asset Import Library
 // (Assimp): Wavefront OBJ, Stanford PLY, Quake II MD2, glTF, OFF, 3DS and STL,
-// and no other of the formats Assimp reads. A file's meshes are merged into one, each placed by
-// the transforms of the nodes above it, so that the model stands as its
-// author built it (Assimp turns MD2's z-up models y-up this way).
+// and no other of the formats Assimp reads. A file's meshes are merged into
+// one (or into one for each of the file's materials), each placed by the
+// transforms of the nodes above it, so that the model stands as its author
+// built it (Assimp turns MD2's z-up models y-up this way).
 #pragma once
 
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/model_materials.hpp"
 #include "scene/mesh_geometry.hpp"
 
 namespace rise {
@@ -31,6 +33,17 @@ class MeshFileError : public std::runtime_error {
 // Throws MeshFileError for a missing, unreadable, unsupported, corrupt or
 // empty file.
 MeshGeometry loadMeshFile(const std::filesystem::path& path, int md2Keyframe = 0);
+
+// The triangles of a model that wear one of its materials.
+struct ModelPart {
+  MeshGeometry geometry;
+  std::optional<ModelMaterial> material;  // none where the file describes none
+};
+
+// The model in `path` as loadMeshFile reads it (the pose of an MD2 model's
+// first keyframe), in parts: one for each material that its triangles wear,
+// in the order of the file's materials.
+std::vector<ModelPart> loadModelParts(const std::filesystem::path& path);
 
 inline constexpr float kCreaseAngleDegrees = 80.0f;
 

@@ -113,7 +113,65 @@ std::unique_ptr<Shape> readMeshFile(const CheckedMap& mesh, const Field& file, i
   }
 }
 
+// The file's material as one of the scene's, added the first time a mesh
+// wears it.
+int wornMaterial(const std::optional<ModelMaterial>& model, const Field& file,
+                 SceneMaterials& materials, SceneFiles& files) {
+  const std::string fileName = readName(file);
+  Material material = model ? asSceneMaterial(*model) : Material{};
+  material.name = (model ? model->name : std::string("default")) + " of " + fileName;
+  if (const std::optional<int> worn = materials.find(material.name)) return *worn;
+  if (model && model->diffuseTexture) {
+    // Files written on Windows separate folders with backslashes.
+    std::string texture = model->diffuseTexture->string();
+    std::replace(texture.begin(), texture.end(), '\\', '/');
+    std::vector<std::string> warnings;
+    try {
+      material.texture = files.imageTexture(files.path(fileName).parent_path() / texture,
+                                            Encoding::Srgb, TextureFilter::Bilinear, warnings);
+    } catch (const ImageFileError& error) {
+      failAt(file.mark, "cannot load the texture " + inQuotes(texture) + " of material " +
+                            inQuotes(model->name) + " of mesh " + inQuotes(fileName) + ": " +
+                            error.what());
+    }
+    files.warn(file.mark, warnings);
+  }
+  return materials.add(std::move(material));
+}
+
 }  // namespace
+
+std::vector<std::unique_ptr<Shape>> readMeshInItsMaterials(const CheckedMap& mesh,
+                                                           const Mat4& worldFromObject,
+                                                           SceneMaterials& materials,
+                                                           SceneFiles& files) {
+  const Field file = mesh.required("file");
+  const std::string fileName = readName(file);
+  for (const std::string_view key : {"frame", "frames"}) {
+    if (const std::optional<Field> field = mesh.optional(key))
+      failAt(field->mark, field->name +
+                              " picks keyframes of an MD2 model, which wears the object's "
+                              "'material' and its skin; expected a 'material' beside it");
+  }
+  std::vector<ModelPart> parts;
+  try {
+    parts = loadModelParts(files.path(fileName));
+  } catch (const MeshFileError& error) {
+    failAt(file.mark, "cannot load mesh " + inQuotes(fileName) + ": " + error.what());
+  }
+  if (std::none_of(parts.begin(), parts.end(), [](const ModelPart& part) { return part.material; }))
+    failAt(mesh.mark(), "mesh " + inQuotes(fileName) +
+                            " needs a 'material': the file describes none of its own (an OBJ "
+                            "file's materials are in the MTL file its 'mtllib' line names)");
+  std::vector<std::unique_ptr<Shape>> shapes;
+  for (ModelPart& part : parts) {
+    std::array poses{std::move(part.geometry)};
+    mapAndPlace(mesh, poses, worldFromObject);
+    shapes.push_back(std::make_unique<TriangleMesh>(
+        std::move(poses[0]), wornMaterial(part.material, file, materials, files)));
+  }
+  return shapes;
+}
 
 std::unique_ptr<Shape> readMesh(const CheckedMap& mesh, int material, const Mat4& worldFromObject,
                                 SceneFiles& files) {

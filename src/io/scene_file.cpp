@@ -284,10 +284,19 @@ Scene readScene(const YamlNode& root, std::string source) {
   if (const std::optional<Field> materials = map.optional("materials"))
     scene.materials = readMaterials(*materials, files);
   SceneMaterials materials(scene.materials);
+  int object = 0;
   for (const Field& item :
        readList(map.required("objects"), "a list of objects", "an item of 'objects'")) {
-    scene.shapes.push_back(readObject(item, materials, files));
-    scene.shapeNames.push_back(describeObject(item));
+    std::vector<std::unique_ptr<Shape>> shapes = readObject(item, materials, files);
+    for (std::unique_ptr<Shape>& shape : shapes) {
+      std::string name = describeObject(item);
+      // A model in its own materials is a mesh for each of them.
+      if (shapes.size() > 1) name += " wearing " + materials[shape->material()].name;
+      scene.shapeNames.push_back(std::move(name));
+      scene.shapeObjects.push_back(object);
+      scene.shapes.push_back(std::move(shape));
+    }
+    ++object;
   }
   for (const SceneFiles::Warning& warning : files.warnings())
     scene.warnings.push_back(scene.source + ":" + std::to_string(warning.mark.line + 1) + ":" +

@@ -163,7 +163,8 @@ const std::vector<ShapeKind>& shapeKinds() {
 
 }  // namespace
 
-std::unique_ptr<Shape> readObject(const Field& item, SceneMaterials& materials, SceneFiles& files) {
+std::vector<std::unique_ptr<Shape>> readObject(const Field& item, SceneMaterials& materials,
+                                               SceneFiles& files) {
   std::vector<std::string> kindNames;
   for (const ShapeKind& kind : shapeKinds()) kindNames.push_back(kind.name);
   const MapEntry entry = readKindAndProperties(item, "shape", kindNames);
@@ -173,11 +174,31 @@ std::unique_ptr<Shape> readObject(const Field& item, SceneMaterials& materials, 
   std::vector<std::string> keys = kind.keys;
   keys.insert(keys.end(), {"material", "transform", "motion"});
   const CheckedMap properties(makeField(entry.value, kind.name, entry.keyMark), kind.name, keys);
-  int material = readMaterialReference(properties.required("material"), materials, kind.name);
-  if (kind.name == "mesh") material = withMd2Skin(properties, material, materials, files);
+  const bool wearsFileMaterials =
+      kind.name == "mesh" && properties.optional("file") && !properties.optional("material");
+  std::optional<int> material;
+  if (!wearsFileMaterials) {
+    material = readMaterialReference(properties.required("material"), materials, kind.name);
+    if (kind.name == "mesh") material = withMd2Skin(properties, *material, materials, files);
+  }
   TransformSpec transform;
   if (const std::optional<Field> field = properties.optional("transform"))
     transform = readPlacement(*field, "the transform of " + kind.name, TransformSpec{});
+  std::optional<TransformSpec> close;
+  if (const std::optional<Field> field = properties.optional("motion"))
+    close = readPlacement(*field, "the motion of " + kind.name, transform);
+  const auto moving = [&](std::unique_ptr<Shape> shape) -> std::unique_ptr<Shape> {
+    return std::make_unique<MovingShape>(std::move(shape), transform, *close);
+  };
+
+  std::vector<std::unique_ptr<Shape>> shapes;
+  if (wearsFileMaterials) {
+    shapes = readMeshInItsMaterials(properties, close ? Mat4(1.0f) : worldFromObject(transform),
+                                    materials, files);
+    if (close)
+      for (std::unique_ptr<Shape>& shape : shapes) shape = moving(std::move(shape));
+    return shapes;
+  }
   // A mesh takes its mapping into its vertices as it loads (mapAndPlace);
   // another shape wears it in its own space, inside its placement.
   std::optional<Mapping> mapping;
@@ -185,21 +206,20 @@ std::unique_ptr<Shape> readObject(const Field& item, SceneMaterials& materials, 
       field && kind.name != "mesh")
     mapping = readMapping(*field);
   const auto readInOwnSpace = [&] {
-    std::unique_ptr<Shape> shape = kind.read(properties, material, Mat4(1.0f), files);
+    std::unique_ptr<Shape> shape = kind.read(properties, *material, Mat4(1.0f), files);
     if (!mapping) return shape;
     return std::unique_ptr<Shape>(std::make_unique<MappedShape>(std::move(shape), *mapping));
   };
-  if (const std::optional<Field> field = properties.optional("motion")) {
-    const TransformSpec close = readPlacement(*field, "the motion of " + kind.name, transform);
-    return std::make_unique<MovingShape>(readInOwnSpace(), transform, close);
-  }
-
   const Mat4 toWorld = worldFromObject(transform);
-  if (kind.takesTransformIntoVertices && !mapping)
-    return kind.read(properties, material, toWorld, files);
-  std::unique_ptr<Shape> shape = readInOwnSpace();
-  if (transform.isIdentity()) return shape;
-  return std::make_unique<TransformedShape>(std::move(shape), toWorld);
+  if (close)
+    shapes.push_back(moving(readInOwnSpace()));
+  else if (kind.takesTransformIntoVertices && !mapping)
+    shapes.push_back(kind.read(properties, *material, toWorld, files));
+  else if (transform.isIdentity())
+    shapes.push_back(readInOwnSpace());
+  else
+    shapes.push_back(std::make_unique<TransformedShape>(readInOwnSpace(), toWorld));
+  return shapes;
 }
 
 std::string describeObject(const Field& item) {

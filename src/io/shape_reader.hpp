@@ -21,9 +21,12 @@
 
 namespace rise {
 
-// The shape of one item of `objects`. An MD2 model may add the material that
-// wears its skin to `materials` (withMd2Skin).
-std::unique_ptr<Shape> readObject(const Field& item, SceneMaterials& materials, SceneFiles& files);
+// The shape of one item of `objects`: one, or, for a model file that wears
+// its own materials, one for each of them (readMeshInItsMaterials). An MD2
+// model may add the material that wears its skin to `materials`
+// (withMd2Skin), a model file its own materials.
+std::vector<std::unique_ptr<Shape>> readObject(const Field& item, SceneMaterials& materials,
+                                               SceneFiles& files);
 
 // The object as a student finds it in the file: its kind and line, "sphere
 // at line 16". For an item that readObject has read.

@@ -43,6 +43,14 @@ struct Scene {
   // Each shape as the scene file names it, "sphere at line 16", for the
   // explanations; empty for a scene built in code.
   std::vector<std::string> shapeNames;
+  // The item of the file's `objects` each shape comes from: one item may be
+  // several shapes (a model in its own materials). Empty for a scene built
+  // in code, whose shapes are its objects.
+  std::vector<int> shapeObjects;
+
+  int objectOf(int shape) const {
+    return shapeObjects.empty() ? shape : shapeObjects[static_cast<std::size_t>(shape)];
+  }
 
   const Material& materialOf(const Shape& shape) const { return materials[shape.material()]; }
 };
