@@ -90,6 +90,37 @@ TEST(PathTracing, AShorterPathSumsFewerBounces) {
   EXPECT_NEAR(meanOf(result.image), 0.75, 0.0075);
 }
 
+// In the closed furnace no path escapes: without the roulette each meets
+// exactly its depth's surfaces; with it, the lengths spread out, and the
+// histogram's bins still count every path and every vertex.
+TEST(PathTracing, CountsThePathsOfEachLength) {
+  const RenderResult fixed = render(furnace(0.5f, 0.5f), "path-tracing", [](auto& s) {
+    s.maxDepth = 3;
+    s.russianRoulette = false;
+  });
+  const double paths = fixed.stats.value("paths");
+  EXPECT_EQ(fixed.stats.value("paths_of_3_vertices"), paths);
+  EXPECT_EQ(fixed.stats.value("paths_of_1_vertex"), 0.0);
+
+  const RenderResult rouletted = render(furnace(0.5f, 0.5f), "path-tracing", [](auto& s) {
+    s.maxDepth = 64;
+    s.russianRoulette = true;
+  });
+  double counted = 0.0, vertices = 0.0;
+  for (int length = 1; length <= 8; ++length) {
+    const std::string name = length == 1   ? "paths_of_1_vertex"
+                             : length == 8 ? "paths_of_8_or_more_vertices"
+                                           : "paths_of_" + std::to_string(length) + "_vertices";
+    const double count = rouletted.stats.value(name);
+    counted += count;
+    if (length < 8) vertices += length * count;
+  }
+  EXPECT_EQ(counted, rouletted.stats.value("paths"));
+  EXPECT_GT(rouletted.stats.value("paths_of_8_or_more_vertices"), 0.0);
+  EXPECT_GT(rouletted.stats.value("paths_of_4_vertices"), 0.0);
+  EXPECT_LT(vertices, rouletted.stats.value("path_vertices"));
+}
+
 // A diffuse floor under a square light of the classic model, seen from above.
 std::string floorUnderALight(const std::string& light) {
   return "image: {width: 24, height: 24, background: [0, 0, 0]}\n"

@@ -44,8 +44,11 @@
 #include "ray/path_tracing.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
 #include <mutex>
 #include <optional>
+#include <string>
 
 #include "ray/emitters.hpp"
 #include "ray/progressive.hpp"
@@ -86,8 +89,6 @@ RenderNeeds PathTracer::needs(const Scene& scene, const RenderSettings& settings
 
 namespace {
 
-float largestChannel(const Color& color) { return std::max({color.r, color.g, color.b}); }
-
 // What the paths did, beyond the rays they traced.
 struct PathCounters {
   std::uint64_t paths = 0;
@@ -95,13 +96,22 @@ struct PathCounters {
   std::uint64_t escaped = 0;   // rays that left the scene, taking the background's light
   std::uint64_t emitterShadowRays = 0;
   std::uint64_t rouletteEnded = 0;
+  // The histogram of the paths' lengths: of 1, 2, ... vertices, the last
+  // bin holding the paths of that many or more.
+  static constexpr std::size_t kLengthBins = 8;
+  std::array<std::uint64_t, kLengthBins> pathsOfLength{};
 
+  void countPath(std::uint64_t pathVertices) {
+    ++pathsOfLength[std::min<std::uint64_t>(pathVertices, kLengthBins) - 1];
+  }
   PathCounters& operator+=(const PathCounters& other) {
     paths += other.paths;
     vertices += other.vertices;
     escaped += other.escaped;
     emitterShadowRays += other.emitterShadowRays;
     rouletteEnded += other.rouletteEnded;
+    for (std::size_t bin = 0; bin < kLengthBins; ++bin)
+      pathsOfLength[bin] += other.pathsOfLength[bin];
     return *this;
   }
   void addTo(Stats& stats) const {
@@ -112,6 +122,12 @@ struct PathCounters {
     stats.add("paths_escaped", static_cast<double>(escaped));
     stats.add("emitter_shadow_rays", static_cast<double>(emitterShadowRays));
     stats.add("roulette_terminations", static_cast<double>(rouletteEnded));
+    for (std::size_t bin = 0; bin < kLengthBins; ++bin)
+      stats.add("paths_of_" + std::to_string(bin + 1) +
+                    (bin + 1 == kLengthBins ? "_or_more_vertices"
+                     : bin == 0             ? "_vertex"
+                                            : "_vertices"),
+                static_cast<double>(pathsOfLength[bin]));
   }
 };
 
@@ -150,8 +166,10 @@ class Path {
   SampleResult traceFromEye(const Ray& ray) {
     ++counters_.primaryRays;
     ++paths_.paths;
+    const std::uint64_t verticesBefore = paths_.vertices;
     SampleResult result;
     result.color = radiance(ray, 1, RayKind::Primary, Color(1.0f), {}, &result);
+    paths_.countPath(paths_.vertices - verticesBefore);
     return result;
   }
 
@@ -228,7 +246,7 @@ class Path {
     }
     Color weight = sample->weight;
     if (settings_.russianRoulette && depth >= kRouletteFromDepth) {
-      const float survival = std::min(1.0f, largestChannel(weight) * largestChannel(throughput));
+      const float survival = std::min(1.0f, maxComponent(weight) * maxComponent(throughput));
       const bool ends = values_.next1D() >= survival;
       if (tree_) [[unlikely]] {
         PathVertex& vertex = tree_->pathVertex();
@@ -255,9 +273,10 @@ class Path {
     for (const auto& light : context_.scene.lights) {
       const LightSample sample = light->illuminate(frame.surface.position, values_.next2D());
       const float cosine = glm::dot(frame.shadingNormal, sample.toLight);
+      if (cosine <= 0.0f) continue;
       const std::optional<Ray> shadow =
           shadowRay(frame.surface, frame.normal, sample.toLight, frame.time);
-      if (cosine <= 0.0f || !shadow) continue;
+      if (!shadow) continue;
       const Color f = scattering.brdf(sample.toLight);
       if (f == Color(0.0f)) continue;
       ++counters_.shadowRays;
@@ -278,16 +297,17 @@ class Path {
     const EmitterPoint point = emitters_.sample(values_.next1D(), values_.next2D());
     const Vec3 offset = point.position - frame.surface.position;
     const float distanceSquared = glm::dot(offset, offset);
-    const Vec3 toLight = offset / std::sqrt(distanceSquared);
+    const float distance = std::sqrt(distanceSquared);
+    const Vec3 toLight = offset / distance;
     const float cosine = glm::dot(frame.shadingNormal, toLight);
     const float cosAtLight = std::abs(glm::dot(point.normal, toLight));
+    if (cosine <= 0.0f || cosAtLight <= 0.0f) return Color(0.0f);
     const std::optional<Ray> shadow = shadowRay(frame.surface, frame.normal, toLight, frame.time);
-    if (cosine <= 0.0f || cosAtLight <= 0.0f || !shadow) return Color(0.0f);
+    if (!shadow) return Color(0.0f);
     const Color f = scattering.brdf(toLight);
     if (f == Color(0.0f)) return Color(0.0f);
     ++counters_.shadowRays;
     ++paths_.emitterShadowRays;
-    const float distance = std::sqrt(distanceSquared);
     const bool blocked = isBlocked(*shadow, distance);
     const float lightDensity = point.areaDensity * distanceSquared / cosAtLight;
     const float weight = settings_.lightSampling == LightSampling::Both

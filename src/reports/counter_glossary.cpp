@@ -120,10 +120,13 @@ constexpr std::array kMeanings = {
     Entry{"samples_per_second", "samples taken per second of the passes"},
 };
 
-constexpr std::array kMeaningsAfterAnother = {
+constexpr std::array kMeaningsByPrefix = {
     Entry{"pixels_differing_from_",
           "pixels that differ by more than 2 levels from the other's image"},
     Entry{"speedup_over_", "times faster than the other algorithm"},
+    Entry{"paths_of_",
+          "paths that met that many surfaces, the ray that escaped included: the histogram of "
+          "the paths' lengths"},
 };
 
 }  // namespace
@@ -131,7 +134,7 @@ constexpr std::array kMeaningsAfterAnother = {
 std::optional<std::string_view> counterMeaning(std::string_view name) {
   for (const auto& [counter, meaning] : kMeanings)
     if (counter == name) return meaning;
-  for (const auto& [prefix, meaning] : kMeaningsAfterAnother)
+  for (const auto& [prefix, meaning] : kMeaningsByPrefix)
     if (name.starts_with(prefix)) return meaning;
   return std::nullopt;
 }
