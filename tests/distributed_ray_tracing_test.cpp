@@ -8,8 +8,8 @@
 #include <string>
 
 #include "algorithms/registry.hpp"
+#include "core/image_error.hpp"
 #include "io/scene_file.hpp"
-#include "support/image_error_testing.hpp"
 #include "support/raster_testing.hpp"
 
 namespace rise {

@@ -12,8 +12,8 @@
 
 #include "algorithms/registry.hpp"
 #include "algorithms/settings_for_scene.hpp"
+#include "core/image_error.hpp"
 #include "io/scene_file.hpp"
-#include "support/image_error_testing.hpp"
 
 namespace rise {
 namespace {

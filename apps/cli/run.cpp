@@ -20,6 +20,7 @@
 #include "look_inside.hpp"
 #include "manual_command.hpp"
 #include "progress_bar.hpp"
+#include "reference_image.hpp"
 #include "render/render_limits.hpp"
 #include "render_outputs.hpp"
 #include "settings_options.hpp"
@@ -36,6 +37,7 @@ struct RenderOptions {
   std::string algorithm{defaultRenderer(Use::Render).name()};
   RenderOutputOptions outputs;
   AnimationOptions animation;
+  std::filesystem::path reference;  // empty: none
 };
 
 int render(const RenderOptions& options, const CLI::App& command) {
@@ -54,6 +56,11 @@ int render(const RenderOptions& options, const CLI::App& command) {
   if (const int* status = std::get_if<int>(&prepared)) return *status;
   Job& job = std::get<Job>(prepared);
   job.settings.buffers = options.outputs.buffers;  // those --aov writes, and no others
+  std::optional<Image> reference;
+  if (!options.reference.empty()) {
+    reference = readReference(options.reference, job.settings);
+    if (!reference) return kExitBadInput;
+  }
   noteUnreadOptions(command, algorithm);
 
   const FrameWriter write = [&](const RenderResult& result, const std::filesystem::path& file) {
@@ -74,8 +81,9 @@ int render(const RenderOptions& options, const CLI::App& command) {
         options.output.empty() ? defaultFramePattern(options.settings.scenePath) : options.output;
     return renderFrames(renderer, job, options.animation, pattern, write);
   }
-  const std::optional<RenderResult> rendered = renderWithProgress(renderer, job);
+  std::optional<RenderResult> rendered = renderWithProgress(renderer, job);
   if (!rendered) return kExitBadInput;
+  if (reference) measureAgainst(*reference, *rendered);
   return write(*rendered, output);
 }
 
@@ -183,6 +191,7 @@ CLI::App* addRenderCommand(CLI::App& app, RenderOptions& options) {
   command->add_option("-a,--algorithm", options.algorithm, "Algorithm (see `rise algorithms`)")
       ->check(CLI::IsMember(algorithmNames()));
   addRenderOutputOptions(*command, options.outputs);
+  addReferenceOption(*command, options.reference);
   return command;
 }
 

@@ -118,6 +118,11 @@ constexpr std::array kMeanings = {
     Entry{"noise",
           "the estimated noise left: the pixels' standard errors over the image's brightness"},
     Entry{"samples_per_second", "samples taken per second of the passes"},
+    // rise render --reference
+    Entry{"reference_rmse",
+          "the root mean square of the linear colours' differences from the reference image"},
+    Entry{"reference_relative_error",
+          "reference_rmse over the reference's own root mean square: 0.01 is an error of 1%"},
 };
 
 constexpr std::array kMeaningsByPrefix = {
