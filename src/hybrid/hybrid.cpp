@@ -137,7 +137,8 @@ RenderResult HybridRenderer::render(const Scene& scene, const RenderSettings& se
           return hybrid::HybridGroup(context, tessellated, settings, passes, firstPass, projections,
                                      film, groupObserver, observer.stepRecorder(), settled)
               .run(counters);
-        });
+        },
+        sceneTessellator(scene, settings));
     addHybridStats(result.stats, counters);
     return result;
   });

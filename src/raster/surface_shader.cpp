@@ -48,6 +48,7 @@ SurfaceShader::SurfaceShader(const Scene& scene, const TessellatedScene& tessell
           std::any_of(scene.materials.begin(), scene.materials.end(),
                       [](const Material& material) { return material.isTransparent(); })),
       shadows_(shadows) {
+  if (!tessellated_.vertexRadiance[kFront].empty()) return;
   if (shading_ == Shading::Flat) lightFaces(workers);
   if (shading_ == Shading::Gouraud) lightVertices(workers);
 }
@@ -145,6 +146,15 @@ ShadedPixel SurfaceShader::shade(int face, const Vec2& centre, const LightVisibi
   const SurfaceVertex& a = tessellated_.vertices[sceneFace.vertices[0]];
   const SurfaceVertex& b = tessellated_.vertices[sceneFace.vertices[1]];
   const SurfaceVertex& c = tessellated_.vertices[sceneFace.vertices[2]];
+  if (!tessellated_.vertexRadiance[kFront].empty()) {
+    const std::vector<Color>& solved = tessellated_.vertexRadiance[sideSeen(screenFace)];
+    const Color color = weights.x * solved[sceneFace.vertices[0]] +
+                        weights.y * solved[sceneFace.vertices[1]] +
+                        weights.z * solved[sceneFace.vertices[2]];
+    if (geometry == PixelGeometry::Skipped) return {color, 0.0f, Vec3(0.0f)};
+    const SurfacePoint surface = surfaceAt(face, weights);
+    return {color, glm::length(surface.position - eye_), surface.normal};
+  }
   const Material& material = scene_.materials[sceneFace.material];
   const bool textured = material.texture || material.ksTexture;
   // Flat and Gouraud shading of an untextured material need no point of

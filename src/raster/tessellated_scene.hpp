@@ -50,6 +50,12 @@ struct TessellatedScene {
   std::vector<SurfaceVertex> vertices;
   std::vector<SceneFace> faces;
   std::vector<std::optional<PlacedProjection>> projections;  // by shape
+  // The light each vertex gives off, the same in every direction, on the
+  // side its normal points to (front) and on the other (back), where it was
+  // solved before the scene is drawn (radiosity/radiosity.hpp): the surfaces
+  // then show it, interpolated across each face, in place of the
+  // illumination model. Empty otherwise.
+  std::array<std::vector<Color>, 2> vertexRadiance;
 };
 
 // Tessellates every shape of the scene; planes become squares centred under

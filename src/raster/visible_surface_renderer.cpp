@@ -195,12 +195,24 @@ class FrameRegions final : public Progress {
 
 RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSettings& settings,
                                             RenderObserver& observer) const {
-  return renderInPasses(scene, settings, observer,
-                        [&](const TessellatedScene& tessellated, const ScreenGeometry& screen,
-                            const AccumulationPass& pass, RenderObserver& passObserver) {
-                          return renderProjected(scene, tessellated, screen, settings, pass,
-                                                 passObserver);
-                        });
+  return renderTessellated(scene, settings, observer, sceneTessellator(scene, settings));
+}
+
+RenderResult VisibleSurfaceRenderer::renderTessellated(const Scene& scene,
+                                                       const RenderSettings& settings,
+                                                       RenderObserver& observer,
+                                                       const Tessellator& tessellate) const {
+  return renderInPasses(
+      scene, settings, observer,
+      [&](const TessellatedScene& tessellated, const ScreenGeometry& screen,
+          const AccumulationPass& pass, RenderObserver& passObserver) {
+        return renderProjected(scene, tessellated, screen, settings, pass, passObserver);
+      },
+      tessellate);
+}
+
+Tessellator sceneTessellator(const Scene& scene, const RenderSettings& settings) {
+  return [&scene, &settings](float time) { return tessellateForRaster(scene, settings, time); };
 }
 
 // Each pass's pixels go to the film as samples at the pass's offset, so
@@ -210,10 +222,11 @@ RenderResult VisibleSurfaceRenderer::render(const Scene& scene, const RenderSett
 // "cost", which adds up over the passes where it is wanted, as do the counters.
 RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settings,
                                 RenderObserver& observer, int largestGroup,
-                                const PassGroupRenderer& renderGroup) {
+                                const PassGroupRenderer& renderGroup,
+                                const Tessellator& tessellate) {
   const std::vector<AccumulationPass> passes = accumulationPasses(scene.camera, settings);
   const int passCount = static_cast<int>(passes.size());
-  TessellatedScene tessellated = tessellateForRaster(scene, settings, passes[0].time);
+  TessellatedScene tessellated = tessellate(passes[0].time);
   Film film(settings.width, settings.height, settings.sampling.filter);
   const Workers workers(settings.threads);
   const ViewFrame frame(scene.camera, settings.width, settings.height);
@@ -222,7 +235,7 @@ RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settin
   RenderResult accumulated;
   for (int first = 0; first < passCount && !observer.cancelled();) {
     if (first > 0 && passes[first].time != passes[first - 1].time)
-      tessellated = tessellateForRaster(scene, settings, passes[first].time);
+      tessellated = tessellate(passes[first].time);
     int end = first + 1;
     while (end < passCount && end - first < largestGroup && passes[end].time == passes[first].time)
       ++end;
@@ -256,7 +269,8 @@ RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settin
 }
 
 RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
-                            RenderObserver& observer, const PassRenderer& renderPass) {
+                            RenderObserver& observer, const PassRenderer& renderPass,
+                            const Tessellator& tessellate) {
   return renderInPassGroups(
       scene, settings, observer, 1,
       [&](const TessellatedScene& tessellated, std::span<const AccumulationPass> passes,
@@ -267,7 +281,8 @@ RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
         film.addImage(std::move(results.back().image), passes[0].pixelOffset,
                       Workers(settings.threads));
         return results;
-      });
+      },
+      tessellate);
 }
 
 ScreenGeometry PassProjections::of(int pass, const TessellatedScene& tessellated) {

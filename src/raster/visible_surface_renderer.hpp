@@ -41,11 +41,19 @@ struct AccumulationPass {
 // over instants spread across the shutter interval, what moves (P. Haeberli
 // and K. Akeley, "The accumulation buffer: hardware support for high-quality
 // rendering", SIGGRAPH 1990). Each pass is a whole image by the algorithm.
+// The scene's triangles at a fraction of the shutter interval: the scene
+// tessellated (tessellateForRaster), or a mesh made from it, such as
+// radiosity's elements with the light solved at their vertices.
+using Tessellator = std::function<TessellatedScene(float time)>;
+
 class VisibleSurfaceRenderer : public Renderer {
  public:
   RenderNeeds needs(const Scene& scene, const RenderSettings& settings) const override;
   RenderResult render(const Scene& scene, const RenderSettings& settings,
                       RenderObserver& observer) const override;
+  // The same, of the triangles `tessellate` gives.
+  RenderResult renderTessellated(const Scene& scene, const RenderSettings& settings,
+                                 RenderObserver& observer, const Tessellator& tessellate) const;
 
   // One pass, of the scene tessellated at the pass's time.
   RenderResult renderSample(const Scene& scene, const TessellatedScene& tessellated,
@@ -109,7 +117,8 @@ using PassRenderer =
 // rendered by `renderPass` and added to the film through the reconstruction
 // filter. What every visible-surface algorithm renders by.
 RenderResult renderInPasses(const Scene& scene, const RenderSettings& settings,
-                            RenderObserver& observer, const PassRenderer& renderPass);
+                            RenderObserver& observer, const PassRenderer& renderPass,
+                            const Tessellator& tessellate);
 
 // Renders a group of consecutive passes that share an instant, all of the
 // scene tessellated then, the first of them pass number `firstPass`: for
@@ -127,7 +136,11 @@ using PassGroupRenderer = std::function<std::vector<RenderResult>(
 // hybrid algorithm shades a pixel's samples one after another.
 RenderResult renderInPassGroups(const Scene& scene, const RenderSettings& settings,
                                 RenderObserver& observer, int largestGroup,
-                                const PassGroupRenderer& renderGroup);
+                                const PassGroupRenderer& renderGroup,
+                                const Tessellator& tessellate);
+
+// The scene tessellated by tessellateForRaster, as the settings ask.
+Tessellator sceneTessellator(const Scene& scene, const RenderSettings& settings);
 
 // "polygons_in", "polygons_culled", ...: what the projection did.
 void addProjectionStats(Stats& stats, const ScreenGeometry& screen);

@@ -62,4 +62,14 @@ std::string_view lightSamplingName(LightSampling sampling) {
   return "?";
 }
 
+std::string_view radiositySolverName(RadiositySolver solver) {
+  switch (solver) {
+    case RadiositySolver::Progressive:
+      return "progressive";
+    case RadiositySolver::GaussSeidel:
+      return "gauss-seidel";
+  }
+  return "?";
+}
+
 }  // namespace rise

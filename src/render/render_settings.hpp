@@ -56,6 +56,24 @@ inline constexpr LightSampling kAllLightSamplings[] = {LightSampling::Lights, Li
                                                        LightSampling::Both};
 std::string_view lightSamplingName(LightSampling sampling);  // as on the command line: "mis"
 
+// How radiosity solves the light between its elements: by progressive
+// refinement, shooting the light of one element at a time (Cohen, Chen,
+// Wallace and Greenberg 1988), or by Gauss-Seidel's sweeps over all of them
+// (Cohen and Greenberg 1985).
+enum class RadiositySolver { Progressive, GaussSeidel };
+inline constexpr RadiositySolver kAllRadiositySolvers[] = {RadiositySolver::Progressive,
+                                                           RadiositySolver::GaussSeidel};
+std::string_view radiositySolverName(RadiositySolver solver);  // "progressive"
+
+// Radiosity's: the longest side of an element (0: a 24th of the scene's
+// size, or more where that makes more than 3,000 elements), and the residual it solves to: the
+// light not yet passed on, over the light the sources give.
+struct RadiositySettings {
+  float patchSize = 0.0f;
+  double residual = 0.01;
+  RadiositySolver solver = RadiositySolver::Progressive;
+};
+
 // How long a progressive algorithm (the path tracer) refines its image, pass
 // after pass: up to `samples` a pixel, for at most `timeLimit` seconds of
 // passes (0: no limit), or until the estimated noise falls to `noiseTarget`
@@ -97,6 +115,7 @@ struct RenderSettings {
   LightSampling lightSampling = LightSampling::Both;
   bool russianRoulette = true;
   Progression progression;
+  RadiositySettings radiosity;
 
   // Only this part of the image, for renders split among processes: the
   // result holds its pixels alone, each the value it has in the whole image

@@ -12,6 +12,8 @@ std::string_view toString(Family family) {
       return "ray tracing";
     case Family::Hybrid:
       return "hybrid";
+    case Family::Radiosity:
+      return "radiosity";
   }
   return "?";
 }

@@ -58,7 +58,7 @@ class RenderObserver : public Progress {
 // The two families of algorithms: those that project polygons and find the
 // one visible at each pixel (raster/), and those that trace rays (ray/); and
 // the algorithms that join them (hybrid/).
-enum class Family { VisibleSurface, RayTracing, Hybrid };
+enum class Family { VisibleSurface, RayTracing, Hybrid, Radiosity };
 
 // The settings of RenderSettings that only some algorithms read.
 enum class Option {
