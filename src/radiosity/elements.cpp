@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "scene/mesh_geometry.hpp"
+#include "scene/shapes/triangle_mesh.hpp"
 
 namespace rise {
 
@@ -70,6 +71,24 @@ void cutFace(const TessellatedScene& tessellated, const SceneFace& face, int n, 
 }
 
 }  // namespace
+
+Scene elementsAsScene(const Scene& scene, const ElementMesh& mesh) {
+  Scene elements;
+  elements.materials = scene.materials;
+  std::vector<MeshGeometry> byMaterial(scene.materials.size());
+  for (const Element& element : mesh.elements) {
+    MeshGeometry& geometry = byMaterial[static_cast<std::size_t>(element.material)];
+    const int first = static_cast<int>(geometry.positions.size());
+    for (const int vertex : element.vertices)
+      geometry.positions.push_back(mesh.triangles.vertices[vertex].position);
+    geometry.triangles.push_back({first, first + 1, first + 2});
+  }
+  for (std::size_t m = 0; m < byMaterial.size(); ++m)
+    if (!byMaterial[m].triangles.empty())
+      elements.shapes.push_back(
+          std::make_unique<TriangleMesh>(std::move(byMaterial[m]), static_cast<int>(m)));
+  return elements;
+}
 
 ElementMesh meshElements(const TessellatedScene& tessellated, float largestSide) {
   ElementMesh mesh;

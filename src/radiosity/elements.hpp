@@ -40,6 +40,12 @@ ElementMesh meshElements(const TessellatedScene& tessellated, float largestSide)
 
 inline constexpr int kMostCutsOfAFace = 64;
 
+// The elements as triangles a ray can meet, in `scene`'s materials: one mesh
+// for each material, so that a transparent one lets its share of light
+// through. Visibility between elements is asked of them, not of the exact
+// shapes, whose curved surfaces their flat triangles cut into.
+Scene elementsAsScene(const Scene& scene, const ElementMesh& mesh);
+
 // The elements a mesh would have, known without making it (a render's
 // memory and time are worked out from it first).
 std::uint64_t elementCount(const TessellatedScene& tessellated, float largestSide);

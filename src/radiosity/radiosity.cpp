@@ -50,7 +50,6 @@
 #include "raster/z_buffer.hpp"
 #include "ray/scene_intersector.hpp"
 #include "render/render_limits.hpp"
-#include "scene/shapes/triangle_mesh.hpp"
 
 namespace rise {
 
@@ -87,26 +86,6 @@ Color reflectanceOf(const Material& material) {
   const Color rho = material.kd * (1.0f - material.transmission) * material.color;
   const float largest = maxComponent(rho);
   return largest > 1.0f ? rho / largest : rho;
-}
-
-// The elements as triangles a ray can meet: one mesh for each material, so
-// that a transparent one lets its share of light through.
-Scene elementScene(const Scene& scene, const ElementMesh& mesh) {
-  Scene elements;
-  elements.materials = scene.materials;
-  std::vector<MeshGeometry> byMaterial(scene.materials.size());
-  for (const Element& element : mesh.elements) {
-    MeshGeometry& geometry = byMaterial[static_cast<std::size_t>(element.material)];
-    const int first = static_cast<int>(geometry.positions.size());
-    for (const int vertex : element.vertices)
-      geometry.positions.push_back(mesh.triangles.vertices[vertex].position);
-    geometry.triangles.push_back({first, first + 1, first + 2});
-  }
-  for (std::size_t m = 0; m < byMaterial.size(); ++m)
-    if (!byMaterial[m].triangles.empty())
-      elements.shapes.push_back(
-          std::make_unique<TriangleMesh>(std::move(byMaterial[m]), static_cast<int>(m)));
-  return elements;
 }
 
 // A point just off the element's side that faces `towards`: rays leave from
@@ -356,7 +335,7 @@ SolvedScene solveRadiosity(const Scene& scene, const RenderSettings& settings) {
   SolvedScene solved;
   const TessellatedScene triangles = sceneTriangles(scene, settings);
   solved.mesh = meshElements(triangles, elementSideOf(scene, settings, triangles));
-  const Scene elements = elementScene(scene, solved.mesh);
+  const Scene elements = elementsAsScene(scene, solved.mesh);
   const SceneIntersector blockers(elements, settings.accel, settings.threads);
   const Workers workers(settings.threads);
   const float offset = 1e-4f * sceneSize(scene);
