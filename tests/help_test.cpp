@@ -45,7 +45,7 @@ TEST(Help, InspectOffersOnlyTheAlgorithmsThatTraceRays) {
   ASSERT_NE(line, std::string::npos) << help.output;
   const std::string offered = help.output.substr(line, help.output.find('\n', line) - line);
   for (const Renderer* renderer : allRenderers()) {
-    const bool tracesRays = renderer->description().family != Family::VisibleSurface;
+    const bool tracesRays = renderer->description().offers(Look::RayTrees);
     EXPECT_EQ(offered.find(" " + std::string(renderer->name())) != std::string::npos, tracesRays)
         << renderer->name() << " in " << offered;
   }

@@ -97,6 +97,25 @@ void addPathOptions(CLI::App& command, RenderSettings& settings) {
       ->check(finitePositiveNumber());
 }
 
+void addRadiosityOptions(CLI::App& command, RadiositySettings& settings) {
+  command
+      .add_option("--patch-size", settings.patchSize,
+                  "Radiosity: the side of the patches the light is solved between (default: "
+                  "what keeps them at most 3,000)")
+      ->check(finitePositiveNumber());
+  command
+      .add_option("--residual", settings.residual,
+                  "Radiosity: solve until the light still to pass on is this share of the "
+                  "sources'")
+      ->capture_default_str()
+      ->check(numberFrom(1e-6, 1.0));
+  command
+      .add_option("--solver", settings.solver,
+                  "Radiosity: progressive refinement (progressive, the default) or "
+                  "gauss-seidel")
+      ->transform(choicesNamedBy(kAllRadiositySolvers, radiositySolverName));
+}
+
 }  // namespace
 
 void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
@@ -165,6 +184,7 @@ void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
                   "fragment lists (default sorted)")
       ->transform(choicesNamedBy(kAllTransparencies, transparencyName));
   addPathOptions(command, settings);
+  addRadiosityOptions(command, settings.radiosity);
 }
 
 CLI::Validator encodings() {

@@ -64,6 +64,16 @@ void drawShadowSettings(RenderSettings& settings, const AlgorithmDescription& al
   ImGui::SliderInt("Shadow filter radius", &settings.shadowFilter, 0, 16);
 }
 
+// The command line's ranges: a patch size of 0 leaves the size to RISE.
+void drawRadiositySettings(RadiositySettings& settings) {
+  ImGui::DragFloat("Patch size (0: chosen)", &settings.patchSize, 1.0f, 0.0f, 1e6f, "%g");
+  settings.patchSize = std::max(settings.patchSize, 0.0f);
+  float residual = static_cast<float>(settings.residual);
+  if (ImGui::SliderFloat("Residual", &residual, 1e-6f, 1.0f, "%g", ImGuiSliderFlags_Logarithmic))
+    settings.residual = residual;
+  choiceCombo("Solver", settings.solver, kAllRadiositySolvers, radiositySolverName);
+}
+
 }  // namespace
 
 void Studio::drawRenderPanel() {
@@ -176,6 +186,9 @@ void Studio::drawRenderSettings(const AlgorithmDescription& algorithm) {
         ImGui::SliderInt("Path samples", &settings.progression.samples, 1, 4096);
         ImGui::InputDouble("Time limit (s, 0: none)", &settings.progression.timeLimit);
         settings.progression.timeLimit = std::max(settings.progression.timeLimit, 0.0);
+        break;
+      case Option::Radiosity:
+        drawRadiositySettings(settings.radiosity);
         break;
     }
   }

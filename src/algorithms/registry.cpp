@@ -4,6 +4,7 @@
 
 #include "core/elapsed.hpp"
 #include "hybrid/hybrid.hpp"
+#include "radiosity/radiosity.hpp"
 #include "raster/area_subdivision.hpp"
 #include "raster/depth_sort.hpp"
 #include "raster/scanline.hpp"
@@ -37,7 +38,8 @@ std::span<const Renderer* const> allRenderers() {
       WhittedRayTracer,
       DistributedRayTracer,
       HybridRenderer,
-      PathTracer>();
+      PathTracer,
+      RadiosityRenderer>();
   // clang-format on
 }
 

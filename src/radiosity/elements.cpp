@@ -10,23 +10,6 @@ namespace rise {
 
 namespace {
 
-float longestSide(const std::array<Vec3, 3>& corners) {
-  return std::max({glm::length(corners[1] - corners[0]), glm::length(corners[2] - corners[1]),
-                   glm::length(corners[0] - corners[2])});
-}
-
-int cutsOf(const std::array<Vec3, 3>& corners, float largestSide) {
-  const float cuts = std::ceil(longestSide(corners) / largestSide);
-  if (!(cuts >= 1.0f)) return 1;
-  return static_cast<int>(std::min(cuts, static_cast<float>(kMostCutsOfAFace)));
-}
-
-std::array<Vec3, 3> cornersOf(const TessellatedScene& tessellated, const SceneFace& face) {
-  return {tessellated.vertices[face.vertices[0]].position,
-          tessellated.vertices[face.vertices[1]].position,
-          tessellated.vertices[face.vertices[2]].position};
-}
-
 // The vertex at (i, j) of the face's n x n grid: a + (b - a) i / n + (c - a) j / n.
 SurfaceVertex gridVertex(const std::array<const SurfaceVertex*, 3>& corners, int i, int j, int n) {
   const float u = static_cast<float>(i) / n, v = static_cast<float>(j) / n, w = 1.0f - u - v;
@@ -72,6 +55,23 @@ void cutFace(const TessellatedScene& tessellated, const SceneFace& face, int n, 
 
 }  // namespace
 
+std::array<Vec3, 3> cornersOf(const std::vector<SurfaceVertex>& vertices,
+                              const std::array<int, 3>& indices) {
+  return {vertices[indices[0]].position, vertices[indices[1]].position,
+          vertices[indices[2]].position};
+}
+
+float longestSide(const std::array<Vec3, 3>& corners) {
+  return std::max({glm::length(corners[1] - corners[0]), glm::length(corners[2] - corners[1]),
+                   glm::length(corners[0] - corners[2])});
+}
+
+int cutsOfFace(const std::array<Vec3, 3>& corners, float largestSide) {
+  const float cuts = std::ceil(longestSide(corners) / largestSide);
+  if (!(cuts >= 1.0f)) return 1;
+  return static_cast<int>(std::min(cuts, static_cast<float>(kMostCutsOfAFace)));
+}
+
 Scene elementsAsScene(const Scene& scene, const ElementMesh& mesh) {
   Scene elements;
   elements.materials = scene.materials;
@@ -94,14 +94,16 @@ ElementMesh meshElements(const TessellatedScene& tessellated, float largestSide)
   ElementMesh mesh;
   mesh.triangles.projections = tessellated.projections;
   for (const SceneFace& face : tessellated.faces)
-    cutFace(tessellated, face, cutsOf(cornersOf(tessellated, face), largestSide), mesh);
+    cutFace(tessellated, face,
+            cutsOfFace(cornersOf(tessellated.vertices, face.vertices), largestSide), mesh);
   return mesh;
 }
 
 std::uint64_t elementCount(const TessellatedScene& tessellated, float largestSide) {
   std::uint64_t count = 0;
   for (const SceneFace& face : tessellated.faces) {
-    const auto n = static_cast<std::uint64_t>(cutsOf(cornersOf(tessellated, face), largestSide));
+    const auto n = static_cast<std::uint64_t>(
+        cutsOfFace(cornersOf(tessellated.vertices, face.vertices), largestSide));
     count += n * n;
   }
   return count;

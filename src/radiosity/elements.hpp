@@ -29,7 +29,10 @@ inline constexpr int kBackSide = 1;
 using TwoSides = std::array<Color, 2>;
 
 struct ElementMesh {
-  TessellatedScene triangles;  // a face for each element, in the same order
+  // The faces drawn: a face for each element, in the same order, as meshing
+  // makes them; after adaptive subdivision, an element's triangle or the
+  // triangles it is drawn as (refinement.hpp).
+  TessellatedScene triangles;
   std::vector<Element> elements;
 };
 
@@ -39,6 +42,12 @@ struct ElementMesh {
 ElementMesh meshElements(const TessellatedScene& tessellated, float largestSide);
 
 inline constexpr int kMostCutsOfAFace = 64;
+
+std::array<Vec3, 3> cornersOf(const std::vector<SurfaceVertex>& vertices,
+                              const std::array<int, 3>& indices);
+// The n of a face's n x n cut (meshElements).
+int cutsOfFace(const std::array<Vec3, 3>& corners, float largestSide);
+float longestSide(const std::array<Vec3, 3>& corners);
 
 // The elements as triangles a ray can meet, in `scene`'s materials: one mesh
 // for each material, so that a transparent one lets its share of light

@@ -13,24 +13,27 @@
 // the light interpolated across them (Gouraud), from any camera, at once.
 //
 // The steps:
-//   meshing: the scene's triangles cut into elements (elements.hpp);
-//   form factors: from each element's centre to every other element, by the
+//   meshing: the scene's triangles cut into elements, and the elements
+//     gathered into patches, between which the light is solved
+//     (meshing.hpp);
+//   form factors: from each patch's centre to every other patch, by the
 //     disc's closed form (form_factors.hpp), zero where a ray between their
 //     centres is blocked: the shadows;
 //   direct light: each element lit by the lights of the classic model, with
 //     shadow rays to points spread over each light (soft shadows of area
-//     lights);
+//     lights), its patch's light the mean of its elements';
 //   solving, one of two ways: progressive refinement (Cohen, Chen, Wallace
 //     and Greenberg, "A progressive refinement approach to fast radiosity
 //     image generation", SIGGRAPH 1988) shoots, again and again, the light
-//     that the element holding the most has not yet passed on to all the
-//     others, so that the image is near right after a few shots; Gauss-Seidel
+//     the patch holding the most has not yet passed on to all the others,
+//     so that the image is near right after a few shots; Gauss-Seidel
 //     (Cohen and Greenberg, "The hemi-cube", SIGGRAPH 1985) sweeps the
 //     equations, each L_i computed again from the latest of the others. Both
 //     stop when the light still to pass on (or still changing) is under the
 //     `--residual` share of the light the sources give;
-//   display: the z-buffer draws the elements, each vertex showing the mean
-//     light of the elements around it.
+//   display: each element's light, its own direct light and what it reflects
+//     of the light its patch gathered, carried to its corners (each the mean
+//     of the elements around it), and drawn by the z-buffer.
 //
 // Every surface is taken to be diffuse, with the reflectance kd C of its
 // material (what it lets through left out). A surface standing alone (a
@@ -38,7 +41,7 @@
 // of a solid alone takes and gives light. Mirrors, glass and highlights are
 // the ray tracers' (the two-pass method of Wallace, Cohen and Greenberg,
 // SIGGRAPH 1987, would add them). The form factors are kept, N x N numbers
-// for N elements, so that the two solvers solve the very same equations.
+// for N patches, so that the two solvers solve the very same equations.
 #include "radiosity/radiosity.hpp"
 
 #include <algorithm>
@@ -66,7 +69,8 @@ const AlgorithmDescription& RadiosityRenderer::description() const {
           "generation, SIGGRAPH 1988",
       .family = Family::Radiosity,
       .buffers = {"depth", "normal", "cost", "face"},
-      .options = {Option::Culling, Option::Tessellation, Option::PlaneSize, Option::Accel},
+      .options = {Option::Culling, Option::Tessellation, Option::PlaneSize, Option::Accel,
+                  Option::Radiosity},
       .effects = {Effect::Shadows, Effect::SoftShadows, Effect::IndirectLight},
       // The solution is the whole scene's, and each tile draws it whole.
       .tileStatistics = TileStatistics::WholeImage};
@@ -75,10 +79,7 @@ const AlgorithmDescription& RadiosityRenderer::description() const {
 
 namespace {
 
-// The bytes of the form factors of `elements` elements.
-std::uint64_t formFactorBytes(std::uint64_t elements) {
-  return elements * elements * sizeof(float);
-}
+std::uint64_t formFactorBytes(std::uint64_t patches) { return patches * patches * sizeof(float); }
 
 // The diffuse reflectance of a material, scaled down where a channel would
 // pass 1, as no surface gives back more light than it receives.
@@ -88,50 +89,45 @@ Color reflectanceOf(const Material& material) {
   return largest > 1.0f ? rho / largest : rho;
 }
 
-// A point just off the element's side that faces `towards`: rays leave from
-// there, past the element itself.
-Vec3 leaving(const Element& element, const Vec3& towards, float offset) {
-  const float side = glm::dot(element.normal, towards - element.centre) >= 0.0f ? 1.0f : -1.0f;
-  return element.centre + side * offset * element.normal;
-}
-
 class Solver {
  public:
-  Solver(const Scene& scene, const ElementMesh& mesh, const SceneIntersector& blockers,
-         const RadiositySettings& settings, const Workers& workers, float offset)
+  Solver(const Scene& scene, const RadiosityMesh& mesh, const SceneIntersector& blockers,
+         const DirectLight& directLight, const RadiositySettings& settings, const Workers& workers,
+         float offset)
       : scene_(scene),
-        mesh_(mesh),
+        directLight_(directLight),
+        elements_(mesh.elementMesh),
+        patches_(mesh.patchMesh),
         blockers_(blockers),
         settings_(settings),
         workers_(workers),
         offset_(offset),
-        count_(mesh.elements.size()),
+        count_(patches_.patches.size()),
         formFactors_(count_ * count_, 0.0f),
         sideFacing_(count_ * count_, kFrontSide) {
-    for (const Element& element : mesh.elements)
-      reflectance_.push_back(reflectanceOf(scene.materials[element.material]));
+    for (const Patch& patch : patches_.patches)
+      reflectance_.push_back(reflectanceOf(scene.materials[patch.material]));
   }
 
   RadiositySolution solve() {
     findFormFactors();
-    const std::vector<TwoSides> sources = sourceLight();
+    const std::vector<TwoSides> elementSources = sourceLight();
+    const std::vector<TwoSides> sources = patchLight(elementSources);
     if (settings_.solver == RadiositySolver::GaussSeidel)
       sweep(sources);
     else
       shoot(sources);
+    solution_.radiance = elementLight(elementSources);
     return std::move(solution_);
   }
 
  private:
   float& formFactor(std::size_t to, std::size_t from) { return formFactors_[to * count_ + from]; }
-  // The side of element `of` that faces element `towards`.
+  // The side of patch `of` that faces patch `towards`.
   std::uint8_t& sideFacing(std::size_t of, std::size_t towards) {
     return sideFacing_[of * count_ + towards];
   }
-
-  static int sideTowards(const Element& element, const Vec3& point) {
-    return glm::dot(element.normal, point - element.centre) >= 0.0f ? kFrontSide : kBackSide;
-  }
+  const Patch& patch(std::size_t i) const { return patches_.patches[i]; }
 
   // Each pair's visibility once, by one ray between their centres; both
   // form factors from it, each to the side of the other that faces it.
@@ -141,18 +137,20 @@ class Solver {
     std::vector<std::uint64_t> rays(count_, 0);
     workers_.forEachTask(static_cast<int>(count_), [&](int task) {
       const auto i = static_cast<std::size_t>(task);
-      const Element& a = mesh_.elements[i];
+      const Patch& a = patch(i);
       IntersectionCounters counters;
       for (std::size_t j = i + 1; j < count_; ++j) {
-        const Element& b = mesh_.elements[j];
-        const int sideOfA = sideTowards(a, b.centre), sideOfB = sideTowards(b, a.centre);
+        const Patch& b = patch(j);
+        const int sideOfA = sideTowards(a.centre, a.normal, b.centre),
+                  sideOfB = sideTowards(b.centre, b.normal, a.centre);
         // The inside of a solid neither gives nor takes light.
         if ((!a.twoSided && sideOfA == kBackSide) || (!b.twoSided && sideOfB == kBackSide))
           continue;
         const float towardsB = formFactorTo(a, b), towardsA = formFactorTo(b, a);
         if (towardsB <= 0.0f && towardsA <= 0.0f) continue;
         ++rays[i];
-        const Vec3 from = leaving(a, b.centre, offset_), to = leaving(b, a.centre, offset_);
+        const Vec3 from = leaving(a.centre, a.normal, b.centre, offset_),
+                   to = leaving(b.centre, b.normal, a.centre, offset_);
         const float through =
             luminance(blockers_.transmittance({from, to - from}, 0.0f, 1.0f, counters));
         formFactor(i, j) = towardsB * through;
@@ -165,52 +163,67 @@ class Solver {
     solution_.formFactors = count_ > 0 ? count_ * (count_ - 1) : 0;
   }
 
-  float formFactorTo(const Element& from, const Element& to) const {
-    const std::vector<SurfaceVertex>& vertices = mesh_.triangles.vertices;
-    return formFactorToTriangle(
-        from.centre, from.normal,
-        {vertices[to.vertices[0]].position, vertices[to.vertices[1]].position,
-         vertices[to.vertices[2]].position},
-        to.normal);
+  // To a patch cut from a face, its triangle's form factor; to one gathered
+  // of many elements, that of a disc of the area it shows.
+  float formFactorTo(const Patch& from, const Patch& to) const {
+    if (!to.triangle)
+      return formFactorToDisc(from.centre, from.normal, to.centre, to.normal, to.facingArea);
+    return formFactorToTriangle(from.centre, from.normal, *to.triangle, to.normal);
   }
 
   // What each side of each element gives off before any light is passed
-  // between elements: its emission, and what it reflects of the classic
-  // lights, each light sampled at 4 x 4 points of its area (one, for a point
-  // light, 16 times the same), which give irradiance pi times their colour.
+  // between patches: its emission, and what it reflects of the classic
+  // lights.
   std::vector<TwoSides> sourceLight() {
-    std::vector<TwoSides> sources(count_);
-    std::vector<std::uint64_t> rays(count_, 0);
-    constexpr int kSide = 4;
-    workers_.forEachTask(static_cast<int>(count_), [&](int task) {
-      const auto i = static_cast<std::size_t>(task);
-      const Element& element = mesh_.elements[i];
+    const std::vector<Element>& elements = elements_.elements;
+    std::vector<TwoSides> sources(elements.size());
+    std::vector<std::uint64_t> rays(elements.size(), 0);
+    workers_.forEachTask(static_cast<int>(elements.size()), [&](int task) {
+      const auto e = static_cast<std::size_t>(task);
+      const Element& element = elements[e];
       const Color& emission = scene_.materials[element.material].emission;
-      TwoSides& given = sources[i];
-      given = {emission, element.twoSided ? emission : Color(0.0f)};
-      IntersectionCounters counters;
-      for (const std::unique_ptr<Light>& light : scene_.lights)
-        for (int sample = 0; sample < kSide * kSide; ++sample) {
-          const Vec2 u((sample % kSide + 0.5f) / kSide, (sample / kSide + 0.5f) / kSide);
-          const LightSample toLight = light->illuminate(element.centre, u);
-          const int side = sideTowards(element, element.centre + toLight.toLight);
-          const float cosine = std::abs(glm::dot(element.normal, toLight.toLight));
-          if (!(cosine > 0.0f) || (!element.twoSided && side == kBackSide)) continue;
-          const Vec3 from = leaving(element, element.centre + toLight.toLight, offset_);
-          ++rays[i];
-          given[side] +=
-              reflectance_[i] * toLight.color * cosine *
-              blockers_.transmittance({from, toLight.toLight}, 0.0f, toLight.distance, counters) /
-              static_cast<float>(kSide * kSide);
-        }
+      sources[e] = directLight_.reflected(element.centre, element.normal, element.twoSided,
+                                          reflectance_[patches_.patchOf[e]], rays[e]);
+      sources[e][kFrontSide] += emission;
+      if (element.twoSided) sources[e][kBackSide] += emission;
     });
     for (const std::uint64_t count : rays) solution_.shadowRays += count;
     return sources;
   }
 
-  double powerOf(const TwoSides& light, std::size_t element) const {
+  // The side of its patch an element's side is.
+  int patchSide(std::size_t element, int side) const {
+    const Element& of = elements_.elements[element];
+    return facesAsItsPatch(of, patch(patches_.patchOf[element])) ? side : 1 - side;
+  }
+
+  // Each patch's light: the mean of its elements', weighed by their areas.
+  std::vector<TwoSides> patchLight(const std::vector<TwoSides>& elementLight) const {
+    std::vector<TwoSides> light(count_, TwoSides{Color(0.0f), Color(0.0f)});
+    for (std::size_t e = 0; e < elementLight.size(); ++e) {
+      const std::size_t p = patches_.patchOf[e];
+      for (int side : {kFrontSide, kBackSide})
+        light[p][patchSide(e, side)] +=
+            elementLight[e][side] * (elements_.elements[e].area / patch(p).area);
+    }
+    return light;
+  }
+
+  // Each element's light: its own, and what it reflects of the light its
+  // patch gathered from the others.
+  std::vector<TwoSides> elementLight(const std::vector<TwoSides>& elementSources) const {
+    std::vector<TwoSides> light = elementSources;
+    for (std::size_t e = 0; e < light.size(); ++e) {
+      const std::size_t p = patches_.patchOf[e];
+      for (int side : {kFrontSide, kBackSide})
+        light[e][side] += reflectance_[p] * gathered_[p][patchSide(e, side)];
+    }
+    return light;
+  }
+
+  double powerOf(const TwoSides& light, std::size_t i) const {
     return (static_cast<double>(luminance(light[kFrontSide])) + luminance(light[kBackSide])) *
-           mesh_.elements[element].area;
+           patch(i).area;
   }
   double powerOf(const std::vector<TwoSides>& light) const {
     double power = 0.0;
@@ -218,12 +231,11 @@ class Solver {
     return power;
   }
 
-  // Progressive refinement: the side of an element with the most light not
-  // yet passed on gives it to every element that side faces, each keeping
-  // what it reflects of it as light of its own to pass on in turn.
+  // Progressive refinement: the side of a patch with the most light not yet
+  // passed on gives it to every patch that side faces, each keeping what it
+  // reflects of it as light of its own to pass on in turn.
   void shoot(const std::vector<TwoSides>& sources) {
-    std::vector<TwoSides>& radiance = solution_.radiance;
-    radiance = sources;
+    gathered_.assign(count_, TwoSides{Color(0.0f), Color(0.0f)});
     std::vector<TwoSides> unshot = sources;
     const double sourcePower = powerOf(sources);
     const std::size_t mostShots = 200 * std::max<std::size_t>(count_, 1);
@@ -233,8 +245,7 @@ class Solver {
       double most = -1.0, unshotPower = 0.0;
       for (std::size_t i = 0; i < count_; ++i)
         for (int side : {kFrontSide, kBackSide}) {
-          const double power =
-              static_cast<double>(luminance(unshot[i][side])) * mesh_.elements[i].area;
+          const double power = static_cast<double>(luminance(unshot[i][side])) * patch(i).area;
           unshotPower += power;
           if (power > most) {
             most = power;
@@ -248,33 +259,34 @@ class Solver {
       unshot[shooter][shootingSide] = Color(0.0f);
       for (std::size_t i = 0; i < count_; ++i) {
         if (sideFacing(shooter, i) != shootingSide) continue;
-        const Color gained = reflectance_[i] * formFactor(i, shooter) * shotLight;
+        const Color arriving = formFactor(i, shooter) * shotLight;
         const int side = sideFacing(i, shooter);
-        radiance[i][side] += gained;
-        unshot[i][side] += gained;
+        gathered_[i][side] += arriving;
+        unshot[i][side] += reflectance_[i] * arriving;
       }
       ++solution_.iterations;
     }
   }
 
-  // Gauss-Seidel: each element's light computed again from the equations,
+  // Gauss-Seidel: each patch's light computed again from the equations,
   // with the latest light of the others, sweep after sweep, until a sweep
   // changes the light by less than the residual's share.
   void sweep(const std::vector<TwoSides>& sources) {
-    std::vector<TwoSides>& radiance = solution_.radiance;
-    radiance = sources;
+    std::vector<TwoSides> radiance = sources;
+    gathered_.assign(count_, TwoSides{Color(0.0f), Color(0.0f)});
     const double sourcePower = powerOf(sources);
     constexpr int kMostSweeps = 1000;
     while (sourcePower > 0.0 && solution_.iterations < kMostSweeps) {
       double changed = 0.0;
       for (std::size_t i = 0; i < count_; ++i) {
-        TwoSides gathered{Color(0.0f), Color(0.0f)};
+        TwoSides& gathered = gathered_[i];
+        gathered = {Color(0.0f), Color(0.0f)};
         for (std::size_t j = 0; j < count_; ++j)
           gathered[sideFacing(i, j)] += formFactor(i, j) * radiance[j][sideFacing(j, i)];
         for (int side : {kFrontSide, kBackSide}) {
           const Color updated = sources[i][side] + reflectance_[i] * gathered[side];
-          changed += static_cast<double>(luminance(glm::abs(updated - radiance[i][side]))) *
-                     mesh_.elements[i].area;
+          changed +=
+              static_cast<double>(luminance(glm::abs(updated - radiance[i][side]))) * patch(i).area;
           radiance[i][side] = updated;
         }
       }
@@ -285,78 +297,52 @@ class Solver {
   }
 
   const Scene& scene_;
-  const ElementMesh& mesh_;
+  const DirectLight& directLight_;
+  const ElementMesh& elements_;
+  const PatchMesh& patches_;
   const SceneIntersector& blockers_;
   const RadiositySettings& settings_;
   const Workers& workers_;
   float offset_;
-  std::size_t count_;
+  std::size_t count_;                     // of patches
   std::vector<float> formFactors_;        // by receiver, then source
-  std::vector<std::uint8_t> sideFacing_;  // by element, then the element it faces
-  std::vector<Color> reflectance_;
+  std::vector<std::uint8_t> sideFacing_;  // by patch, then the patch it faces
+  std::vector<Color> reflectance_;        // by patch
+  std::vector<TwoSides> gathered_;        // by patch: the light reaching each side
   RadiositySolution solution_;
 };
-
-// The size of what the scene holds that has bounds (a plane has none).
-float sceneSize(const Scene& scene) {
-  Bounds3 bounds;
-  for (const std::unique_ptr<Shape>& shape : scene.shapes)
-    if (const Bounds3 shapeBounds = shape->bounds(); shapeBounds.isFinite())
-      bounds.grow(shapeBounds);
-  const float size = bounds.isEmpty() ? 0.0f : glm::length(bounds.extent());
-  return size > 0.0f ? size : 1.0f;
-}
-
-// The scene's triangles, a plane's square at most four times the size of
-// the rest: the light of elements far beyond would be solved for nothing.
-TessellatedScene sceneTriangles(const Scene& scene, const RenderSettings& settings) {
-  RenderSettings near = settings;
-  near.planeSize = std::min(settings.planeSize, 4.0f * sceneSize(scene));
-  return tessellateForRaster(scene, near);
-}
-
-// Without a patch size, a 24th of the scene's size, made larger until the
-// elements are at most kMostElementsByDefault, or each triangle of the
-// scene is one (a scene of many small triangles has no fewer).
-constexpr std::uint64_t kMostElementsByDefault = 3000;
-
-float elementSideOf(const Scene& scene, const RenderSettings& settings,
-                    const TessellatedScene& triangles) {
-  if (settings.radiosity.patchSize > 0.0f) return settings.radiosity.patchSize;
-  const float size = sceneSize(scene);
-  float side = size / 24.0f;
-  while (side < size && elementCount(triangles, side) > kMostElementsByDefault) side *= 1.25f;
-  return side;
-}
 
 }  // namespace
 
 SolvedScene solveRadiosity(const Scene& scene, const RenderSettings& settings) {
-  SolvedScene solved;
-  const TessellatedScene triangles = sceneTriangles(scene, settings);
-  solved.mesh = meshElements(triangles, elementSideOf(scene, settings, triangles));
-  const Scene elements = elementsAsScene(scene, solved.mesh);
+  SolvedScene solved{meshForRadiosity(scene, settings), {}};
+  const Scene elements = elementsAsScene(scene, solved.mesh.elementMesh);
   const SceneIntersector blockers(elements, settings.accel, settings.threads);
   const Workers workers(settings.threads);
   const float offset = 1e-4f * sceneSize(scene);
+  const DirectLight directLight(scene, blockers, offset);
+  const RefinementCounts refined = refineWhereTheLightChanges(solved.mesh, directLight, workers);
   solved.solution =
-      Solver(scene, solved.mesh, blockers, settings.radiosity, workers, offset).solve();
-  solved.mesh.triangles.vertexRadiance = vertexLight(solved.mesh, solved.solution.radiance);
+      Solver(scene, solved.mesh, blockers, directLight, settings.radiosity, workers, offset)
+          .solve();
+  solved.solution.elementsCut = refined.elementsCut;
+  solved.solution.shadowRays += refined.shadowRays;
+  solved.mesh.elementMesh.triangles.vertexRadiance =
+      vertexLight(solved.mesh.elementMesh, solved.solution.radiance);
   return solved;
 }
 
 RenderNeeds RadiosityRenderer::needs(const Scene& scene, const RenderSettings& settings) const {
   RenderNeeds needs = visibleSurfaceNeeds(scene, settings);
-  const TessellatedScene triangles = sceneTriangles(scene, settings);
-  const std::uint64_t elements = elementCount(triangles, elementSideOf(scene, settings, triangles));
-  const std::uint64_t bytes = formFactorBytes(elements);
+  const RadiosityMeshSize size = radiosityMeshSize(scene, settings);
+  const std::uint64_t bytes = formFactorBytes(size.patches);
   needs.bytes += bytes;
   if (bytes > needs.bytes / 2) {
-    needs.mostOfTheMemory = "the form factors between " + std::to_string(elements) + " elements";
-    needs.toTakeLess = "larger elements (--patch-size)";
+    needs.mostOfTheMemory = "the form factors between " + std::to_string(size.patches) + " patches";
+    needs.toTakeLess = "larger patches (--patch-size)";
   }
-  const double pairs = 0.5 * static_cast<double>(elements) * static_cast<double>(elements);
-  needs.rays = pairs + static_cast<double>(elements) * 16.0 * scene.lights.size();
+  const double pairs = 0.5 * static_cast<double>(size.patches) * static_cast<double>(size.patches);
+  needs.rays = pairs + static_cast<double>(size.elements) * 16.0 * scene.lights.size();
   return needs;
 }
 
@@ -365,17 +351,19 @@ RenderResult RadiosityRenderer::render(const Scene& scene, const RenderSettings&
   const auto start = std::chrono::steady_clock::now();
   const SolvedScene solved = solveRadiosity(scene, settings);
   const RadiositySolution& solution = solved.solution;
-  const ElementMesh& mesh = solved.mesh;
+  const RadiosityMesh& mesh = solved.mesh;
   const double solveSeconds = secondsSince(start);
 
   // The light is drawn as it was solved: no shadows of the display's own.
   RenderSettings display = settings;
   display.shadows = ShadowMethod::None;
   display.shading = Shading::Gouraud;
-  RenderResult result = ZBufferRenderer().renderTessellated(scene, display, observer,
-                                                            [&](float) { return mesh.triangles; });
+  RenderResult result = ZBufferRenderer().renderTessellated(
+      scene, display, observer, [&](float) { return mesh.elementMesh.triangles; });
   Stats& stats = result.stats;
-  stats.add("elements", static_cast<double>(mesh.elements.size()));
+  stats.add("patches", static_cast<double>(mesh.patchMesh.patches.size()));
+  stats.add("elements", static_cast<double>(mesh.elementMesh.elements.size()));
+  stats.add("elements_cut", static_cast<double>(solution.elementsCut));
   stats.add("form_factors", static_cast<double>(solution.formFactors));
   stats.add("visibility_rays", static_cast<double>(solution.visibilityRays));
   stats.add("shadow_rays", static_cast<double>(solution.shadowRays));

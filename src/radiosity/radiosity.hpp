@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "radiosity/elements.hpp"
+#include "radiosity/refinement.hpp"
 #include "render/renderer.hpp"
 
 namespace rise {
@@ -22,12 +22,13 @@ struct RadiositySolution {
   int iterations = 0;              // shots, or sweeps of Gauss-Seidel
   double residual = 0.0;           // the light not yet passed on, over the sources'
   std::uint64_t formFactors = 0;
+  std::uint64_t elementsCut = 0;  // by adaptive subdivision
   std::uint64_t visibilityRays = 0;
   std::uint64_t shadowRays = 0;  // to the lights of the classic model
 };
 
 struct SolvedScene {
-  ElementMesh mesh;  // its vertices' light set (vertexRadiance), ready to draw
+  RadiosityMesh mesh;  // its elements' vertices' light set (vertexRadiance), ready to draw
   RadiositySolution solution;
 };
 

@@ -29,11 +29,11 @@ RenderSettings settingsFor(const Scene& scene, float patchSize) {
 Color lightNear(const SolvedScene& solved, const Vec3& point, const Vec3& towards) {
   std::size_t nearest = 0;
   float best = kInfinity;
-  for (std::size_t i = 0; i < solved.mesh.elements.size(); ++i) {
-    const float d = glm::length(solved.mesh.elements[i].centre - point);
+  for (std::size_t i = 0; i < solved.mesh.elementMesh.elements.size(); ++i) {
+    const float d = glm::length(solved.mesh.elementMesh.elements[i].centre - point);
     if (d < best) best = d, nearest = i;
   }
-  const Element& element = solved.mesh.elements[nearest];
+  const Element& element = solved.mesh.elementMesh.elements[nearest];
   const int side = glm::dot(element.normal, towards - element.centre) >= 0.0f ? 0 : 1;
   return solved.solution.radiance[nearest][side];
 }
@@ -85,11 +85,11 @@ TEST(Radiosity, TheFurnaceGlowsAsTheSeriesOfItsBouncesSums) {
     settings.radiosity.residual = 1e-4;
     const SolvedScene solved = solveRadiosity(scene, settings);
     double sum = 0.0, area = 0.0;
-    for (std::size_t i = 0; i < solved.mesh.elements.size(); ++i) {
+    for (std::size_t i = 0; i < solved.mesh.elementMesh.elements.size(); ++i) {
       // The inside of the box faces the eye: the back of its faces, whose
       // normals point out.
-      sum += solved.solution.radiance[i][kBackSide].r * solved.mesh.elements[i].area;
-      area += solved.mesh.elements[i].area;
+      sum += solved.solution.radiance[i][kBackSide].r * solved.mesh.elementMesh.elements[i].area;
+      area += solved.mesh.elementMesh.elements[i].area;
     }
     EXPECT_NEAR(sum / area, 0.2 / (1.0 - 0.6), 0.015 * 0.5) << radiositySolverName(solver);
     EXPECT_LE(solved.solution.residual, 1e-4);

@@ -40,6 +40,8 @@ std::string_view toString(Option option) {
       return "light-sampling";
     case Option::Progression:
       return "time-limit";
+    case Option::Radiosity:
+      return "patch-size";
   }
   return "?";
 }

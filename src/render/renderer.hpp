@@ -71,12 +71,13 @@ enum class Option {
   Accel,
   MaxDepth,
   LightSampling,  // and the roulette
-  Progression     // the time limit and the noise target
+  Progression,    // the time limit and the noise target
+  Radiosity       // the patch size, the residual and the solver
 };
 inline constexpr Option kAllOptions[] = {
     Option::Shading,       Option::Culling,      Option::Tessellation, Option::PlaneSize,
     Option::Shadows,       Option::Transparency, Option::Accel,        Option::MaxDepth,
-    Option::LightSampling, Option::Progression};
+    Option::LightSampling, Option::Progression,  Option::Radiosity};
 
 // What an algorithm shows of light beyond the Phong model at each surface.
 enum class Effect {
