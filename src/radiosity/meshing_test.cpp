@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
+#include "algorithms/settings_for_scene.hpp"
 #include "io/scene_file.hpp"
 #include "radiosity/form_factors.hpp"
 #include "radiosity/radiosity.hpp"
@@ -13,24 +15,15 @@
 namespace rise {
 namespace {
 
-RenderSettings settingsOfSize(int width, int height, float patchSize) {
-  RenderSettings settings;
-  settings.width = width;
-  settings.height = height;
-  settings.threads = 2;
-  settings.radiosity.patchSize = patchSize;
-  return settings;
-}
-
-std::array<Vec3, 3> cornersOfElement(const ElementMesh& mesh, const Element& element) {
-  return cornersOf(mesh.triangles.vertices, element.vertices);
-}
-
-// The axis nearest a normal and which way along it: 0 to 5.
-int facingAxis(const Vec3& normal) {
-  const Vec3 size = glm::abs(normal);
-  const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
-  return 2 * axis + (normal[axis] < 0.0f ? 1 : 0);
+// The settings a front end makes for the scene, on two threads, of patches
+// of `patchSize`, the image `width` wide where given.
+RenderSettings radiositySettings(const Scene& scene, float patchSize,
+                                 std::optional<int> width = {}) {
+  RenderRequest request;
+  request.settings.threads = 2;
+  request.settings.radiosity.patchSize = patchSize;
+  request.image.width = width;
+  return settingsFor(scene, request);
 }
 
 // Inside a closed box, all that leaves a wall reaches another wall: each
@@ -41,17 +34,18 @@ TEST(FormFactors, SumToOneInAClosedBoxAndAreReciprocal) {
       "materials: {white: {color: [1, 1, 1]}}\n"
       "objects: [{box: {min: [-1, -1, -1], max: [1, 0.5, 1.5], material: white}}]\n",
       "box.yaml");
-  const ElementMesh mesh = meshElements(tessellateForRaster(scene, settingsOfSize(8, 8, 0)), 0.5f);
+  const ElementMesh mesh =
+      meshElements(tessellateForRaster(scene, radiositySettings(scene, 0.5f)), 0.5f);
   const std::vector<Element>& elements = mesh.elements;
   ASSERT_GT(elements.size(), 50u);
   const auto formFactor = [&](const Element& from, const Element& to) {
     if (glm::dot(from.normal, to.centre - from.centre) >= 0.0f) return 0.0;  // the same wall
-    return static_cast<double>(
-        formFactorToTriangle(from.centre, from.normal, cornersOfElement(mesh, to), to.normal));
+    return static_cast<double>(formFactorToTriangle(
+        from.centre, from.normal, cornersOf(mesh.triangles.vertices, to.vertices), to.normal));
   };
   // By wall, each known by its normal: A_a F_ab = the sum over its elements
   // i of A_i F_i->b.
-  const auto wallOf = [](const Element& element) { return facingAxis(element.normal); };
+  const auto wallOf = [](const Element& element) { return facingOf(element.normal); };
   std::array<std::array<double, 6>, 6> shared{};
   double worstSum = 0.0;
   for (const Element& from : elements) {
@@ -83,7 +77,7 @@ const char* const kModelScene =
 
 TEST(Patches, GatherSmallTrianglesIntoFewPatchesEachElementInOne) {
   const Scene scene = loadScene(kModelScene, "sphere.yaml");
-  RenderSettings settings = settingsOfSize(16, 16, 0.8f);
+  RenderSettings settings = radiositySettings(scene, 0.8f);
   settings.tessellation = 48;  // a sphere of many small triangles
   const TessellatedScene triangles = tessellateForRaster(scene, settings);
   const ElementMesh elements = meshElements(triangles, 0.8f);
@@ -129,7 +123,7 @@ bool strictlyWithin(const Vec3& point, const Vec3& a, const Vec3& b) {
 
 TEST(AdaptiveSubdivision, CutsAtTheShadowsEdgeAndDrawsNoTVertex) {
   const Scene scene = loadScene(kShadowScene, "shadow.yaml");
-  const SolvedScene solved = solveRadiosity(scene, settingsOfSize(96, 64, 0.75f));
+  const SolvedScene solved = solveRadiosity(scene, radiositySettings(scene, 0.75f));
   EXPECT_GT(solved.solution.elementsCut, 20u);
   const TessellatedScene& drawn = solved.mesh.elementMesh.triangles;
   // No corner of a drawn face lies inside another's side.
@@ -150,7 +144,7 @@ TEST(AdaptiveSubdivision, LeavesNoCrackInTheLitFloor) {
   const Scene scene = loadScene(kShadowScene, "shadow.yaml");
   RenderObserver observer;
   const RenderResult result =
-      RadiosityRenderer().render(scene, settingsOfSize(192, 128, 0.75f), observer);
+      RadiosityRenderer().render(scene, radiositySettings(scene, 0.75f, 192), observer);
   const Image& image = result.image;
   float brightest = 0.0f;
   for (const Color& pixel : image.pixels()) brightest = std::max(brightest, luminance(pixel));

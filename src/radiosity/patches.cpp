@@ -12,13 +12,6 @@ namespace {
 // What elements gathered into one patch share.
 using PatchKey = std::tuple<int, int, bool, int, std::int64_t, std::int64_t, std::int64_t>;
 
-// The axis nearest a normal and which way along it: 0 to 5.
-int facingOf(const Vec3& normal) {
-  const Vec3 size = glm::abs(normal);
-  const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
-  return 2 * axis + (normal[axis] < 0.0f ? 1 : 0);
-}
-
 std::int64_t cellOf(float coordinate, float side) {
   constexpr double kFarthestCell = 1e15;
   return static_cast<std::int64_t>(std::clamp(std::floor(static_cast<double>(coordinate) / side),
@@ -61,6 +54,12 @@ void completePatch(const ElementMesh& mesh, Patch& patch) {
 }
 
 }  // namespace
+
+int facingOf(const Vec3& normal) {
+  const Vec3 size = glm::abs(normal);
+  const int axis = size.x >= size.y && size.x >= size.z ? 0 : size.y >= size.z ? 1 : 2;
+  return 2 * axis + (normal[axis] < 0.0f ? 1 : 0);
+}
 
 PatchMesh gatherPatches(const ElementMesh& mesh, float side) {
   PatchMesh gathered;

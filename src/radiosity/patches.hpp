@@ -50,6 +50,10 @@ PatchMesh gatherPatches(const ElementMesh& mesh, float side);
 // would make, known without making them.
 std::uint64_t patchCount(const TessellatedScene& tessellated, float side);
 
+// The axis nearest a normal and which way along it, 0 to 5 (+x, -x, +y, -y,
+// +z, -z): how the elements a patch gathers face the same way.
+int facingOf(const Vec3& normal);
+
 // Whether an element's front is its patch's front (else its back).
 bool facesAsItsPatch(const Element& element, const Patch& patch);
 

@@ -10,19 +10,20 @@
 #include <string>
 
 #include "algorithms/registry.hpp"
+#include "algorithms/settings_for_scene.hpp"
 #include "io/scene_file.hpp"
 #include "radiosity/form_factors.hpp"
 
 namespace rise {
 namespace {
 
-RenderSettings settingsFor(const Scene& scene, float patchSize) {
-  RenderSettings settings;
-  settings.width = scene.image.width;
-  settings.height = scene.image.height;
-  settings.threads = 2;
-  settings.radiosity.patchSize = patchSize;
-  return settings;
+// The settings a front end makes for the scene, on two threads, of patches
+// of `patchSize` (0: chosen).
+RenderSettings radiositySettings(const Scene& scene, float patchSize) {
+  RenderRequest request;
+  request.settings.threads = 2;
+  request.settings.radiosity.patchSize = patchSize;
+  return settingsFor(scene, request);
 }
 
 // The element nearest a point, on the side facing `towards`.
@@ -80,7 +81,7 @@ TEST(Radiosity, TheFurnaceGlowsAsTheSeriesOfItsBouncesSums) {
         "materials: {wall: {color: [1, 1, 1], kd: 0.6, emission: [0.2, 0.2, 0.2]}}\n"
         "objects: [{box: {min: [-1, -1, -1], max: [1, 2, 1], material: wall}}]\n",
         "furnace.yaml");
-    RenderSettings settings = settingsFor(scene, 0.25f);
+    RenderSettings settings = radiositySettings(scene, 0.25f);
     settings.radiosity.solver = solver;
     settings.radiosity.residual = 1e-4;
     const SolvedScene solved = solveRadiosity(scene, settings);
@@ -108,7 +109,7 @@ TEST(Radiosity, TheFloorUnderAPanelTakesItsLightAsTheFormFactorSays) {
       "  - polygon: {vertices: [[343, 548.7, 227], [343, 548.7, 332], [213, 548.7, 332], [213, "
       "548.7, 227]], material: light}\n",
       "panel.yaml");
-  const SolvedScene solved = solveRadiosity(scene, settingsFor(scene, 20.0f));
+  const SolvedScene solved = solveRadiosity(scene, radiositySettings(scene, 20.0f));
   // The form factor from the floor's point under the panel's centre to the
   // panel, 0.014212 (integrated apart), times its emission and the floor's
   // reflectance.
@@ -130,7 +131,7 @@ Color meanOfTheRoom(const Image& image) {
 // the path tracer's converged image agree, and so do radiosity's solvers.
 TEST(Radiosity, DrawsTheCornellBoxAsThePathTracerDoes) {
   Scene scene = loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/cornell-box-measured.yaml");
-  RenderSettings settings = settingsFor(scene, 0.0f);
+  RenderSettings settings = radiositySettings(scene, 0.0f);
   settings.width = settings.height = 48;
   settings.radiosity.residual = 1e-3;
   RenderObserver observer;
