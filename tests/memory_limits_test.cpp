@@ -99,7 +99,7 @@ std::vector<BadInput> memoryClaims() {
        with({"-a", "z-buffer", "--tessellation", "256"}),
        "/dev/null",
        2,
-       "most of it for the 104857600 triangles of --tessellation 256; expected a lower "
+       "most of it for the 104,857,600 triangles of --tessellation 256; expected a lower "
        "--tessellation"},
       {"shadow_maps_of_four_lights",
        {{"s.yaml", spheres(1, 4)}},

@@ -63,9 +63,12 @@ std::filesystem::path defaultOutput(const std::string& scenePath, const std::str
 
 void noteUnreadOptions(const CLI::App& command, const AlgorithmDescription& algorithm) {
   for (Option option : kAllOptions) {
-    const std::string flag = "--" + std::string(toString(option));
-    if (!algorithm.reads(option) && command.count(flag) > 0)
-      std::cerr << "rise: note: " << algorithm.name << " does not read " << flag << "\n";
+    if (algorithm.reads(option)) continue;
+    for (std::string_view name : flagsOf(option)) {
+      const std::string flag = "--" + std::string(name);
+      if (command.count(flag) > 0)
+        std::cerr << "rise: note: " << algorithm.name << " does not read " << flag << "\n";
+    }
   }
 }
 

@@ -96,7 +96,8 @@ int explain(const ExplainOptions& options) {
 int inspect(const InspectOptions& options) {
   const Renderer& renderer = *findRenderer(options.algorithm);
   if (!renderer.description().offers(Look::RayTrees)) {
-    std::cerr << "rise: -a " << options.algorithm << ": traces no rays, and so has no ray tree; "
+    std::cerr << "rise: -a " << options.algorithm
+              << ": traces no rays from the eye, and so has no ray tree; "
               << "expected one of " << joined(treeAlgorithmNames())
               << " (`rise explain` shows the steps of the others)\n";
     return kExitBadInput;

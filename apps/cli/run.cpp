@@ -161,7 +161,8 @@ void listAlgorithms() {
   for (const Renderer* renderer : allRenderers()) {
     const AlgorithmDescription& algorithm = renderer->description();
     std::vector<std::string_view> options, effects, shadows, looks;
-    for (Option option : algorithm.options) options.push_back(toString(option));
+    for (Option option : algorithm.options)
+      for (std::string_view flag : flagsOf(option)) options.push_back(flag);
     for (Look look : algorithm.looks) looks.push_back(toString(look));
     for (Effect effect : algorithm.effects) effects.push_back(toString(effect));
     for (ShadowMethod method : algorithm.shadowMethods) shadows.push_back(shadowMethodName(method));

@@ -114,6 +114,21 @@ void addRadiosityOptions(CLI::App& command, RadiositySettings& settings) {
                   "Radiosity: progressive refinement (progressive, the default) or "
                   "gauss-seidel")
       ->transform(choicesNamedBy(kAllRadiositySolvers, radiositySolverName));
+  command
+      .add_option("--form-factors", settings.formFactors,
+                  "Radiosity: in closed form with a ray for visibility (rays, the default) or by "
+                  "a hemicube over each patch (hemicube)")
+      ->transform(choicesNamedBy(kAllFormFactorMethods, formFactorMethodName));
+  command
+      .add_option("--hemicube-size", settings.hemicubeSize,
+                  "Radiosity: the texels a side of the hemicube's top face")
+      ->capture_default_str()
+      ->check(wholeNumberFrom(8, 1024));
+  command
+      .add_option("--display", settings.display,
+                  "Radiosity: the visible-surface algorithm that draws the solution (z-buffer, the "
+                  "default, scanline, depth-sort or area-subdivision)")
+      ->transform(choicesNamedBy(kAllRadiosityDisplays, radiosityDisplayName));
 }
 
 }  // namespace

@@ -116,7 +116,8 @@ void Studio::drawHelpPanel() {
                                  algorithm.name == algorithm_ ? ImGuiTreeNodeFlags_DefaultOpen : 0))
       continue;
     std::vector<std::string_view> options, effects;
-    for (Option option : algorithm.options) options.push_back(toString(option));
+    for (Option option : algorithm.options)
+      for (std::string_view flag : flagsOf(option)) options.push_back(flag);
     for (Effect effect : algorithm.effects) effects.push_back(toString(effect));
     ImGui::TextWrapped("%s", std::string(algorithm.summary).c_str());
     ImGui::TextWrapped("Citation: %s", std::string(algorithm.citation).c_str());

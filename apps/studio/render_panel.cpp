@@ -72,6 +72,10 @@ void drawRadiositySettings(RadiositySettings& settings) {
   if (ImGui::SliderFloat("Residual", &residual, 1e-6f, 1.0f, "%g", ImGuiSliderFlags_Logarithmic))
     settings.residual = residual;
   choiceCombo("Solver", settings.solver, kAllRadiositySolvers, radiositySolverName);
+  choiceCombo("Form factors", settings.formFactors, kAllFormFactorMethods, formFactorMethodName);
+  if (settings.formFactors == FormFactorMethod::Hemicube)
+    ImGui::SliderInt("Hemicube size", &settings.hemicubeSize, 8, 1024);
+  choiceCombo("Drawn by", settings.display, kAllRadiosityDisplays, radiosityDisplayName);
 }
 
 }  // namespace

@@ -7,7 +7,8 @@
 #     both are measured against (rise render --reference);
 #  2. radiosity solved to --residual and drawn, timed as a user waits (the
 #     whole process), its solve and its display apart (the display is what
-#     a new camera costs), and its error against the reference;
+#     a new camera costs), and its error against the reference; with its
+#     form factors by rays, then by the hemicube;
 #  3. the path tracer at a ladder of sample counts, each timed and measured
 #     the same way; the time it takes to reach radiosity's error,
 #     interpolated in log-log between the ladder's points.
@@ -67,6 +68,8 @@ radiosity_error="$(json_value "$out/radiosity.json" reference_rmse 5)"
 solve="$(json_seconds "$out/radiosity.json" solve_seconds)"
 render="$(json_seconds "$out/radiosity.json" render_seconds)"
 display="$(awk -v r="$render" -v s="$solve" 'BEGIN { printf "%.4f", r - s }')"
+hemicube_wall="$(timed_render hemicube -a radiosity --residual "$residual" \
+  --form-factors hemicube --reference "$out/reference.exr")"
 
 echo "3. the path tracer: $ladder samples a pixel" >&2
 points=""
@@ -91,6 +94,8 @@ scene: $scene, 512x512, $threads threads
 radiosity: $(json_value "$out/radiosity.json" patches 0) patches, $(json_value "$out/radiosity.json" elements 0) elements, $(json_value "$out/radiosity.json" shots 0) shots to a residual of $residual
   wall (as the user waits): $radiosity_wall s; solve: $solve s; display: $display s
   RMSE against the path tracer's $reference_samples-sample reference: $radiosity_error
+radiosity by the hemicube: $(json_value "$out/hemicube.json" hemicube_texels 0) hemicube texels, $(json_value "$out/hemicube.json" shots 0) shots
+  wall: $hemicube_wall s; solve: $(json_seconds "$out/hemicube.json" solve_seconds) s; RMSE: $(json_value "$out/hemicube.json" reference_rmse 5)
 path tracer (wall s, RMSE, samples):
 $points
 the path tracer reaches radiosity's error in: $path_time s

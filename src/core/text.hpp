@@ -41,6 +41,13 @@ std::string joined(const Names& names, std::string_view separator = ", ") {
   return text;
 }
 
+// A whole number with its thousands set apart by commas: "2,188".
+inline std::string grouped(std::uint64_t count) {
+  std::string digits = std::to_string(count);
+  for (int at = static_cast<int>(digits.size()) - 3; at > 0; at -= 3) digits.insert(at, ",");
+  return digits;
+}
+
 // A count with its noun, singular for one: "1 light", "3 lights", "0 lights".
 // The plural is the noun with an s, or `plural` where it is not ("vertices").
 inline std::string counted(std::uint64_t count, std::string_view noun,

@@ -122,6 +122,9 @@ std::array<std::vector<Color>, 2> vertexLight(const ElementMesh& mesh,
   std::vector<std::vector<int>> around(points);
   for (int e = 0; e < static_cast<int>(mesh.elements.size()); ++e)
     for (const int vertex : mesh.elements[e].vertices) around[point[vertex]].push_back(e);
+  std::vector<int> materialOf(vertices.size(), -1);  // of the faces drawn with the vertex
+  for (const SceneFace& face : mesh.triangles.faces)
+    for (const int vertex : face.vertices) materialOf[vertex] = face.material;
 
   constexpr float kSameWay = 0.7071f;  // cos 45 degrees
   std::array<std::vector<Color>, 2> light;
@@ -133,6 +136,7 @@ std::array<std::vector<Color>, 2> vertexLight(const ElementMesh& mesh,
     float weight = 0.0f;
     for (const int e : around[point[v]]) {
       const Element& element = mesh.elements[e];
+      if (element.material != materialOf[v]) continue;
       const float agreement = glm::dot(element.normal, normal);
       if (knowsItsWay && std::abs(agreement) < kSameWay) continue;
       // An element turned the other way shows its back on the vertex's front.

@@ -60,10 +60,10 @@ Scene elementsAsScene(const Scene& scene, const ElementMesh& mesh);
 std::uint64_t elementCount(const TessellatedScene& tessellated, float largestSide);
 
 // The light at each vertex of the mesh, on each side: the mean, weighed by
-// area, of the light of the elements that meet at its point and face its
-// way (within 45 degrees, either side), so that a floor's light does not
-// run up the wall at the corner where they meet, and Gouraud shading shows
-// no seam between elements.
+// area, of the light of the elements of its material that meet at its point
+// and face its way (within 45 degrees, either side), so that a floor's light
+// does not run up the wall at the corner where they meet, nor a lamp's onto
+// the ceiling around it, and Gouraud shading shows no seam between elements.
 std::array<std::vector<Color>, 2> vertexLight(const ElementMesh& mesh,
                                               const std::vector<TwoSides>& elementLight);
 

@@ -8,7 +8,7 @@
 
 #include "algorithms/settings_for_scene.hpp"
 #include "io/scene_file.hpp"
-#include "radiosity/form_factors.hpp"
+#include "radiosity/form_factor_matrix.hpp"
 #include "radiosity/radiosity.hpp"
 #include "raster/visible_surface_renderer.hpp"
 
@@ -27,44 +27,45 @@ RenderSettings radiositySettings(const Scene& scene, float patchSize,
 }
 
 // Inside a closed box, all that leaves a wall reaches another wall: each
-// row of form factors sums to 1; and A_i F_ij = A_j F_ji.
+// row of form factors sums to 1; and A_i F_ij = A_j F_ji; by either method.
 TEST(FormFactors, SumToOneInAClosedBoxAndAreReciprocal) {
   const Scene scene = loadScene(
       "camera: {position: [0, 0, 0], look_at: [0, 0, 1]}\n"
       "materials: {white: {color: [1, 1, 1]}}\n"
       "objects: [{box: {min: [-1, -1, -1], max: [1, 0.5, 1.5], material: white}}]\n",
       "box.yaml");
-  const ElementMesh mesh =
-      meshElements(tessellateForRaster(scene, radiositySettings(scene, 0.5f)), 0.5f);
-  const std::vector<Element>& elements = mesh.elements;
-  ASSERT_GT(elements.size(), 50u);
-  const auto formFactor = [&](const Element& from, const Element& to) {
-    if (glm::dot(from.normal, to.centre - from.centre) >= 0.0f) return 0.0;  // the same wall
-    return static_cast<double>(formFactorToTriangle(
-        from.centre, from.normal, cornersOf(mesh.triangles.vertices, to.vertices), to.normal));
-  };
-  // By wall, each known by its normal: A_a F_ab = the sum over its elements
-  // i of A_i F_i->b.
-  const auto wallOf = [](const Element& element) { return facingOf(element.normal); };
-  std::array<std::array<double, 6>, 6> shared{};
-  double worstSum = 0.0;
-  for (const Element& from : elements) {
-    double sum = 0.0;
-    for (const Element& to : elements) {
-      const double there = formFactor(from, to);
-      sum += there;
-      shared[wallOf(from)][wallOf(to)] += from.area * there;
+  for (const FormFactorMethod method : kAllFormFactorMethods) {
+    RenderSettings settings = radiositySettings(scene, 0.5f);
+    settings.radiosity.formFactors = method;
+    const RadiosityMesh mesh = meshForRadiosity(scene, settings);
+    const std::vector<Patch>& patches = mesh.patchMesh.patches;
+    ASSERT_GT(patches.size(), 50u);
+    const Scene elements = elementsAsScene(scene, mesh.elementMesh);
+    const SceneIntersector blockers(elements, settings.accel, settings.threads);
+    const Workers workers(settings.threads);
+    const FormFactorMatrix formFactors(mesh, blockers, settings.radiosity, workers, 1e-4f);
+    // By wall, each known by its normal: A_a F_ab = the sum over its
+    // patches i of A_i F_i->b.
+    const auto wallOf = [&](std::size_t i) { return facingOf(patches[i].normal); };
+    std::array<std::array<double, 6>, 6> shared{};
+    double worstSum = 0.0;
+    for (std::size_t i = 0; i < patches.size(); ++i) {
+      double sum = 0.0;
+      for (std::size_t j = 0; j < patches.size(); ++j) {
+        sum += formFactors(i, j);
+        shared[wallOf(i)][wallOf(j)] += patches[i].area * formFactors(i, j);
+      }
+      worstSum = std::max(worstSum, std::abs(sum - 1.0));
     }
-    worstSum = std::max(worstSum, std::abs(sum - 1.0));
+    double worstReciprocity = 0.0;
+    for (int a = 0; a < 6; ++a)
+      for (int b = 0; b < 6; ++b)
+        if (shared[a][b] > 0.0)
+          worstReciprocity =
+              std::max(worstReciprocity, std::abs(shared[a][b] - shared[b][a]) / shared[a][b]);
+    EXPECT_LT(worstSum, 0.01) << formFactorMethodName(method);
+    EXPECT_LT(worstReciprocity, 0.01) << formFactorMethodName(method);
   }
-  double worstReciprocity = 0.0;
-  for (int a = 0; a < 6; ++a)
-    for (int b = 0; b < 6; ++b)
-      if (shared[a][b] > 0.0)
-        worstReciprocity =
-            std::max(worstReciprocity, std::abs(shared[a][b] - shared[b][a]) / shared[a][b]);
-  EXPECT_LT(worstSum, 0.01);
-  EXPECT_LT(worstReciprocity, 0.01);
 }
 
 const char* const kModelScene =

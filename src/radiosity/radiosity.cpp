@@ -16,9 +16,9 @@
 //   meshing: the scene's triangles cut into elements, and the elements
 //     gathered into patches, between which the light is solved
 //     (meshing.hpp);
-//   form factors: from each patch's centre to every other patch, by the
-//     disc's closed form (form_factors.hpp), zero where a ray between their
-//     centres is blocked: the shadows;
+//   form factors: from each patch's centre to every other patch, in closed
+//     form with a ray for what hides them, or by a hemicube drawn around
+//     each patch (form_factor_matrix.hpp);
 //   direct light: each element lit by the lights of the classic model, with
 //     shadow rays to points spread over each light (soft shadows of area
 //     lights), its patch's light the mean of its elements';
@@ -33,15 +33,16 @@
 //     `--residual` share of the light the sources give;
 //   display: each element's light, its own direct light and what it reflects
 //     of the light its patch gathered, carried to its corners (each the mean
-//     of the elements around it), and drawn by the z-buffer.
+//     of the elements around it), and drawn by the z-buffer, or by another
+//     of the visible-surface algorithms (--display). A new camera on the
+//     same scene only draws the solution again.
 //
 // Every surface is taken to be diffuse, with the reflectance kd C of its
 // material (what it lets through left out). A surface standing alone (a
 // wall, a polygon) has two sides, each with a light of its own; the outside
 // of a solid alone takes and gives light. Mirrors, glass and highlights are
 // the ray tracers' (the two-pass method of Wallace, Cohen and Greenberg,
-// SIGGRAPH 1987, would add them). The form factors are kept, N x N numbers
-// for N patches, so that the two solvers solve the very same equations.
+// SIGGRAPH 1987, would add them).
 #include "radiosity/radiosity.hpp"
 
 #include <algorithm>
@@ -49,7 +50,12 @@
 #include <cmath>
 
 #include "core/elapsed.hpp"
-#include "radiosity/form_factors.hpp"
+#include "core/text.hpp"
+#include "radiosity/fingerprint.hpp"
+#include "radiosity/form_factor_matrix.hpp"
+#include "raster/area_subdivision.hpp"
+#include "raster/depth_sort.hpp"
+#include "raster/scanline.hpp"
 #include "raster/z_buffer.hpp"
 #include "ray/scene_intersector.hpp"
 #include "render/render_limits.hpp"
@@ -64,14 +70,17 @@ const AlgorithmDescription& RadiosityRenderer::description() const {
           "z-buffer",
       .citation =
           "C. M. Goral, K. E. Torrance, D. P. Greenberg, B. Battaile, Modeling the interaction of "
-          "light between diffuse surfaces, SIGGRAPH 1984; M. F. Cohen, S. E. Chen, J. R. "
+          "light between diffuse surfaces, SIGGRAPH 1984; M. F. Cohen, D. P. Greenberg, The "
+          "hemi-cube, SIGGRAPH 1985; M. F. Cohen, S. E. Chen, J. R. "
           "Wallace, D. P. Greenberg, A progressive refinement approach to fast radiosity image "
           "generation, SIGGRAPH 1988",
       .family = Family::Radiosity,
       .buffers = {"depth", "normal", "cost", "face"},
-      .options = {Option::Culling, Option::Tessellation, Option::PlaneSize, Option::Accel,
-                  Option::Radiosity},
+      // Its faces are all drawn: an element's back may hold light of its own.
+      .options = {Option::Tessellation, Option::PlaneSize, Option::Accel, Option::Radiosity},
       .effects = {Effect::Shadows, Effect::SoftShadows, Effect::IndirectLight},
+      // The steps of the algorithm that draws the solution.
+      .looks = {Look::Steps},
       // The solution is the whole scene's, and each tile draws it whole.
       .tileStatistics = TileStatistics::WholeImage};
   return description;
@@ -91,26 +100,21 @@ Color reflectanceOf(const Material& material) {
 
 class Solver {
  public:
-  Solver(const Scene& scene, const RadiosityMesh& mesh, const SceneIntersector& blockers,
-         const DirectLight& directLight, const RadiositySettings& settings, const Workers& workers,
-         float offset)
+  Solver(const Scene& scene, const RadiosityMesh& mesh, const FormFactorMatrix& formFactors,
+         const DirectLight& directLight, const RadiositySettings& settings, const Workers& workers)
       : scene_(scene),
         directLight_(directLight),
         elements_(mesh.elementMesh),
         patches_(mesh.patchMesh),
-        blockers_(blockers),
+        formFactors_(formFactors),
         settings_(settings),
         workers_(workers),
-        offset_(offset),
-        count_(patches_.patches.size()),
-        formFactors_(count_ * count_, 0.0f),
-        sideFacing_(count_ * count_, kFrontSide) {
+        count_(patches_.patches.size()) {
     for (const Patch& patch : patches_.patches)
       reflectance_.push_back(reflectanceOf(scene.materials[patch.material]));
   }
 
   RadiositySolution solve() {
-    findFormFactors();
     const std::vector<TwoSides> elementSources = sourceLight();
     const std::vector<TwoSides> sources = patchLight(elementSources);
     if (settings_.solver == RadiositySolver::GaussSeidel)
@@ -118,58 +122,18 @@ class Solver {
     else
       shoot(sources);
     solution_.radiance = elementLight(elementSources);
+    solution_.formFactors = count_ > 0 ? count_ * (count_ - 1) : 0;
+    solution_.visibilityRays = formFactors_.visibilityRays();
+    solution_.hemicubeTexels = formFactors_.hemicubeTexels();
     return std::move(solution_);
   }
 
  private:
-  float& formFactor(std::size_t to, std::size_t from) { return formFactors_[to * count_ + from]; }
-  // The side of patch `of` that faces patch `towards`.
-  std::uint8_t& sideFacing(std::size_t of, std::size_t towards) {
-    return sideFacing_[of * count_ + towards];
+  float formFactor(std::size_t to, std::size_t from) const { return formFactors_(to, from); }
+  int sideFacing(std::size_t of, std::size_t towards) const {
+    return formFactors_.sideFacing(of, towards);
   }
   const Patch& patch(std::size_t i) const { return patches_.patches[i]; }
-
-  // Each pair's visibility once, by one ray between their centres; both
-  // form factors from it, each to the side of the other that faces it.
-  // Row i is filled by task i alone, past the diagonal, and so is column i:
-  // no two tasks write one number.
-  void findFormFactors() {
-    std::vector<std::uint64_t> rays(count_, 0);
-    workers_.forEachTask(static_cast<int>(count_), [&](int task) {
-      const auto i = static_cast<std::size_t>(task);
-      const Patch& a = patch(i);
-      IntersectionCounters counters;
-      for (std::size_t j = i + 1; j < count_; ++j) {
-        const Patch& b = patch(j);
-        const int sideOfA = sideTowards(a.centre, a.normal, b.centre),
-                  sideOfB = sideTowards(b.centre, b.normal, a.centre);
-        // The inside of a solid neither gives nor takes light.
-        if ((!a.twoSided && sideOfA == kBackSide) || (!b.twoSided && sideOfB == kBackSide))
-          continue;
-        const float towardsB = formFactorTo(a, b), towardsA = formFactorTo(b, a);
-        if (towardsB <= 0.0f && towardsA <= 0.0f) continue;
-        ++rays[i];
-        const Vec3 from = leaving(a.centre, a.normal, b.centre, offset_),
-                   to = leaving(b.centre, b.normal, a.centre, offset_);
-        const float through =
-            luminance(blockers_.transmittance({from, to - from}, 0.0f, 1.0f, counters));
-        formFactor(i, j) = towardsB * through;
-        formFactor(j, i) = towardsA * through;
-        sideFacing(i, j) = static_cast<std::uint8_t>(sideOfA);
-        sideFacing(j, i) = static_cast<std::uint8_t>(sideOfB);
-      }
-    });
-    for (const std::uint64_t count : rays) solution_.visibilityRays += count;
-    solution_.formFactors = count_ > 0 ? count_ * (count_ - 1) : 0;
-  }
-
-  // To a patch cut from a face, its triangle's form factor; to one gathered
-  // of many elements, that of a disc of the area it shows.
-  float formFactorTo(const Patch& from, const Patch& to) const {
-    if (!to.triangle)
-      return formFactorToDisc(from.centre, from.normal, to.centre, to.normal, to.facingArea);
-    return formFactorToTriangle(from.centre, from.normal, *to.triangle, to.normal);
-  }
 
   // What each side of each element gives off before any light is passed
   // between patches: its emission, and what it reflects of the classic
@@ -300,36 +264,75 @@ class Solver {
   const DirectLight& directLight_;
   const ElementMesh& elements_;
   const PatchMesh& patches_;
-  const SceneIntersector& blockers_;
+  const FormFactorMatrix& formFactors_;
   const RadiositySettings& settings_;
   const Workers& workers_;
-  float offset_;
-  std::size_t count_;                     // of patches
-  std::vector<float> formFactors_;        // by receiver, then source
-  std::vector<std::uint8_t> sideFacing_;  // by patch, then the patch it faces
-  std::vector<Color> reflectance_;        // by patch
-  std::vector<TwoSides> gathered_;        // by patch: the light reaching each side
+  std::size_t count_;               // of patches
+  std::vector<Color> reflectance_;  // by patch
+  std::vector<TwoSides> gathered_;  // by patch: the light reaching each side
   RadiositySolution solution_;
 };
 
 }  // namespace
 
-SolvedScene solveRadiosity(const Scene& scene, const RenderSettings& settings) {
-  SolvedScene solved{meshForRadiosity(scene, settings), {}};
+namespace {
+
+SolvedScene solveMeshed(const Scene& scene, const RenderSettings& settings, RadiosityMesh mesh) {
+  SolvedScene solved{std::move(mesh), {}};
   const Scene elements = elementsAsScene(scene, solved.mesh.elementMesh);
   const SceneIntersector blockers(elements, settings.accel, settings.threads);
   const Workers workers(settings.threads);
   const float offset = 1e-4f * sceneSize(scene);
   const DirectLight directLight(scene, blockers, offset);
   const RefinementCounts refined = refineWhereTheLightChanges(solved.mesh, directLight, workers);
+  const FormFactorMatrix formFactors(solved.mesh, blockers, settings.radiosity, workers, offset);
   solved.solution =
-      Solver(scene, solved.mesh, blockers, directLight, settings.radiosity, workers, offset)
-          .solve();
+      Solver(scene, solved.mesh, formFactors, directLight, settings.radiosity, workers).solve();
   solved.solution.elementsCut = refined.elementsCut;
   solved.solution.shadowRays += refined.shadowRays;
   solved.mesh.elementMesh.triangles.vertexRadiance =
       vertexLight(solved.mesh.elementMesh, solved.solution.radiance);
   return solved;
+}
+
+const VisibleSurfaceRenderer& displayOf(RadiosityDisplay display) {
+  static const ZBufferRenderer zBuffer;
+  static const ScanlineRenderer scanline;
+  static const DepthSortRenderer depthSort;
+  static const AreaSubdivisionRenderer areaSubdivision;
+  switch (display) {
+    case RadiosityDisplay::Scanline:
+      return scanline;
+    case RadiosityDisplay::DepthSort:
+      return depthSort;
+    case RadiosityDisplay::AreaSubdivision:
+      return areaSubdivision;
+    case RadiosityDisplay::ZBuffer:
+      break;
+  }
+  return zBuffer;
+}
+
+}  // namespace
+
+SolvedScene solveRadiosity(const Scene& scene, const RenderSettings& settings) {
+  return solveMeshed(scene, settings, meshForRadiosity(scene, settings));
+}
+
+std::shared_ptr<const SolvedScene> RadiosityRenderer::solved(const Scene& scene,
+                                                             const RenderSettings& settings) const {
+  RadiosityMesh mesh = meshForRadiosity(scene, settings);
+  const std::uint64_t fingerprint = fingerprintOf(scene, mesh, settings.radiosity);
+  {
+    const std::lock_guard lock(lastMutex_);
+    if (last_ && lastFingerprint_ == fingerprint) return last_;
+  }
+  auto solution =
+      std::make_shared<const SolvedScene>(solveMeshed(scene, settings, std::move(mesh)));
+  const std::lock_guard lock(lastMutex_);
+  last_ = solution;
+  lastFingerprint_ = fingerprint;
+  return solution;
 }
 
 RenderNeeds RadiosityRenderer::needs(const Scene& scene, const RenderSettings& settings) const {
@@ -338,7 +341,7 @@ RenderNeeds RadiosityRenderer::needs(const Scene& scene, const RenderSettings& s
   const std::uint64_t bytes = formFactorBytes(size.patches);
   needs.bytes += bytes;
   if (bytes > needs.bytes / 2) {
-    needs.mostOfTheMemory = "the form factors between " + std::to_string(size.patches) + " patches";
+    needs.mostOfTheMemory = "the form factors between " + grouped(size.patches) + " patches";
     needs.toTakeLess = "larger patches (--patch-size)";
   }
   const double pairs = 0.5 * static_cast<double>(size.patches) * static_cast<double>(size.patches);
@@ -349,27 +352,34 @@ RenderNeeds RadiosityRenderer::needs(const Scene& scene, const RenderSettings& s
 RenderResult RadiosityRenderer::render(const Scene& scene, const RenderSettings& settings,
                                        RenderObserver& observer) const {
   const auto start = std::chrono::steady_clock::now();
-  const SolvedScene solved = solveRadiosity(scene, settings);
-  const RadiositySolution& solution = solved.solution;
-  const RadiosityMesh& mesh = solved.mesh;
+  const std::shared_ptr<const SolvedScene> solvedScene = solved(scene, settings);
+  const RadiositySolution& solution = solvedScene->solution;
+  const RadiosityMesh& mesh = solvedScene->mesh;
   const double solveSeconds = secondsSince(start);
 
   // The light is drawn as it was solved: no shadows of the display's own.
   RenderSettings display = settings;
   display.shadows = ShadowMethod::None;
   display.shading = Shading::Gouraud;
-  RenderResult result = ZBufferRenderer().renderTessellated(
-      scene, display, observer, [&](float) { return mesh.elementMesh.triangles; });
+  RenderResult result =
+      displayOf(settings.radiosity.display).renderTessellated(scene, display, observer, [&](float) {
+        return mesh.elementMesh.triangles;
+      });
   Stats& stats = result.stats;
   stats.add("patches", static_cast<double>(mesh.patchMesh.patches.size()));
   stats.add("elements", static_cast<double>(mesh.elementMesh.elements.size()));
   stats.add("elements_cut", static_cast<double>(solution.elementsCut));
   stats.add("form_factors", static_cast<double>(solution.formFactors));
-  stats.add("visibility_rays", static_cast<double>(solution.visibilityRays));
+  if (settings.radiosity.formFactors == FormFactorMethod::Hemicube)
+    stats.add("hemicube_texels", static_cast<double>(solution.hemicubeTexels));
+  else
+    stats.add("visibility_rays", static_cast<double>(solution.visibilityRays));
   stats.add("shadow_rays", static_cast<double>(solution.shadowRays));
   stats.add(settings.radiosity.solver == RadiositySolver::GaussSeidel ? "sweeps" : "shots",
             solution.iterations);
   stats.add("residual", solution.residual);
+  // The time this render spent solving: next to none where it drew the
+  // solution of the render before it again.
   stats.add("solve_seconds", solveSeconds);
   return result;
 }

@@ -1,6 +1,9 @@
 // Radiosity (radiosity.cpp tells it).
 #pragma once
 
+#include <cstdint>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "radiosity/refinement.hpp"
@@ -8,12 +11,26 @@
 
 namespace rise {
 
+struct SolvedScene;
+
 class RadiosityRenderer final : public Renderer {
  public:
   const AlgorithmDescription& description() const override;
   RenderNeeds needs(const Scene& scene, const RenderSettings& settings) const override;
   RenderResult render(const Scene& scene, const RenderSettings& settings,
                       RenderObserver& observer) const override;
+
+ private:
+  // The scene's solution: the last one again where the scene, its mesh and
+  // the settings of radiosity are those it was solved from.
+  std::shared_ptr<const SolvedScene> solved(const Scene& scene,
+                                            const RenderSettings& settings) const;
+
+  // The last solution, and the fingerprint of what it was solved from: a
+  // new camera on the same scene (the studio's orbit) only draws it again.
+  mutable std::mutex lastMutex_;
+  mutable std::shared_ptr<const SolvedScene> last_;
+  mutable std::uint64_t lastFingerprint_ = 0;
 };
 
 // What solving found and what it cost.
@@ -24,7 +41,8 @@ struct RadiositySolution {
   std::uint64_t formFactors = 0;
   std::uint64_t elementsCut = 0;  // by adaptive subdivision
   std::uint64_t visibilityRays = 0;
-  std::uint64_t shadowRays = 0;  // to the lights of the classic model
+  std::uint64_t hemicubeTexels = 0;  // that showed a patch, by the hemicube
+  std::uint64_t shadowRays = 0;      // to the lights of the classic model
 };
 
 struct SolvedScene {

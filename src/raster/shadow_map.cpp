@@ -39,78 +39,21 @@
 #include <cmath>
 
 #include "core/warps.hpp"
-#include "raster/polygon_clipping.hpp"
-#include "raster/polygon_coverage.hpp"
 
 namespace rise {
 
-Vec3 LightView::toView(const Vec3& world) const {
-  const Vec3 offset = world - origin;
-  return {glm::dot(offset, right), glm::dot(offset, up), glm::dot(offset, forward)};
-}
-
-Vec2 LightView::toMap(const Vec3& view) const {
-  const float extent = perspective ? view.z : halfWidth;
-  const float half = 0.5f * static_cast<float>(size);
-  return {(view.x / extent + 1.0f) * half, (1.0f - view.y / extent) * half};
-}
-
-float LightView::texelSize(float depth) const {
-  return 2.0f * (perspective ? depth : halfWidth) / static_cast<float>(size);
-}
-
 namespace {
 
-constexpr float kNearDistance = 1e-4f;
 constexpr float kInfiniteDepth = kInfinity;
 // Near the terminator tan(theta) grows without bound; the bias stops growing
 // where the surface is this steep from the light, a floor seen 89.9 degrees
 // from the light on the horizon of a map still far from it.
 constexpr float kSteepestSlope = 1000.0f;
 
-// The planes a.x + b.y + c.z + d >= 0, in view coordinates, of what a map
-// sees, a texel of margin beyond its sides.
-std::vector<glm::vec4> viewVolume(const LightView& view) {
-  const float widened = 1.0f + 2.0f / static_cast<float>(view.size);
-  if (view.perspective)
-    return {{-1.0f, 0.0f, widened, 0.0f},
-            {1.0f, 0.0f, widened, 0.0f},
-            {0.0f, -1.0f, widened, 0.0f},
-            {0.0f, 1.0f, widened, 0.0f},
-            {0.0f, 0.0f, 1.0f, -kNearDistance}};
-  const float side = widened * view.halfWidth;
-  return {{-1.0f, 0.0f, 0.0f, side},
-          {1.0f, 0.0f, 0.0f, side},
-          {0.0f, -1.0f, 0.0f, side},
-          {0.0f, 1.0f, 0.0f, side}};
-}
-
-// The six faces of the cube around `centre`.
-std::vector<LightView> cubeViews(const Vec3& centre, int size) {
-  const std::array<std::pair<Vec3, Vec3>, 6> axes = {{{{1, 0, 0}, {0, 1, 0}},
-                                                      {{-1, 0, 0}, {0, 1, 0}},
-                                                      {{0, 1, 0}, {0, 0, 1}},
-                                                      {{0, -1, 0}, {0, 0, 1}},
-                                                      {{0, 0, 1}, {0, 1, 0}},
-                                                      {{0, 0, -1}, {0, 1, 0}}}};
-  std::vector<LightView> views;
-  for (const auto& [forward, up] : axes)
-    views.push_back({centre, glm::cross(forward, up), up, forward, true, 0.0f, size});
-  return views;
-}
-
-// The cube face that sees `offset` from its centre: the axis it is longest
-// along, on its side (the order of cubeViews).
-int cubeFaceOf(const Vec3& offset) {
-  const Vec3 size = glm::abs(offset);
-  const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
-  return 2 * axis + (offset[axis] < 0.0f ? 1 : 0);
-}
-
 // Around the scene's finite shapes (planes reach to the horizon and cast
 // nothing that matters there), along the light's direction `travel`.
-std::vector<LightView> orthographicView(const TessellatedScene& tessellated, const Scene& scene,
-                                        const Vec3& travel, int size) {
+std::vector<AxisView> orthographicView(const TessellatedScene& tessellated, const Scene& scene,
+                                       const Vec3& travel, int size) {
   std::vector<bool> finite;
   for (const auto& shape : scene.shapes) finite.push_back(shape->bounds().isFinite());
   Bounds3 bounds;
@@ -131,43 +74,20 @@ bool hasTransparentFaces(const Scene& scene, const TessellatedScene& tessellated
       [&](const SceneFace& face) { return scene.materials[face.material].isTransparent(); });
 }
 
-// Draws the scene's faces into one map, clipped to what it sees; returns the
-// number of faces that reached it.
+// Draws the scene's faces into one map; returns the number of faces that
+// reached it.
 std::uint64_t drawDepths(const Scene& scene, const TessellatedScene& tessellated, DepthMap& map) {
-  const LightView& view = map.view;
-  const std::vector<glm::vec4> volume = viewVolume(view);
-  const PixelRect whole{0, 0, view.size, view.size};
-  std::vector<Vec3> polygon, inside, outside;
-  PolygonCoverage coverage;
+  const AxisView& view = map.view;
+  PolygonInView polygon;
   std::uint64_t drawn = 0;
   for (const SceneFace& face : tessellated.faces) {
-    polygon.clear();
-    for (int vertex : face.vertices)
-      polygon.push_back(view.toView(tessellated.vertices[vertex].position));
-    for (const glm::vec4& plane : volume) {
-      if (polygon.empty()) break;
-      splitPolygon(polygon, plane, 0.0f, inside, outside);
-      polygon.swap(inside);
-    }
-    if (polygon.size() < 3) continue;
-    // On the map each corner is (x, y, affine depth), and the polygon is flat.
-    for (Vec3& corner : polygon) corner = Vec3(view.toMap(corner), view.affineDepth(corner.z));
-    // The plane of the corners, from the widest triangle of the fan: a
-    // clipped corner may lie on its neighbours' line.
-    const glm::dvec3 a(polygon[0]);
-    glm::dvec3 normal(0.0);
-    for (std::size_t i = 2; i < polygon.size(); ++i) {
-      const glm::dvec3 fan = glm::cross(glm::dvec3(polygon[i - 1]) - a, glm::dvec3(polygon[i]) - a);
-      if (std::abs(fan.z) > std::abs(normal.z)) normal = fan;
-    }
-    if (normal.z == 0.0) continue;  // seen edge-on
-    coverage.reset(polygon);
+    const std::array<Vec3, 3> corners = {tessellated.vertices[face.vertices[0]].position,
+                                         tessellated.vertices[face.vertices[1]].position,
+                                         tessellated.vertices[face.vertices[2]].position};
+    if (!polygon.project(view, corners)) continue;
     ++drawn;
     const bool transparent = scene.materials[face.material].isTransparent();
-    coverage.forEachPixel(whole, [&](int x, int y) {
-      const double affine =
-          a.z - (normal.x * (x + 0.5 - a.x) + normal.y * (y + 0.5 - a.y)) / normal.z;
-      const float depth = view.depthOfAffine(static_cast<float>(affine));
+    polygon.forEachTexel(view.whole(), [&](int x, int y, float depth) {
       const std::size_t texel = static_cast<std::size_t>(y) * view.size + x;
       if (!transparent) {
         map.opaque[texel] = std::min(map.opaque[texel], depth);
@@ -202,13 +122,13 @@ ShadowMaps::ShadowMaps(const Scene& scene, const TessellatedScene& tessellated,
   const bool transparency = hasTransparentFaces(scene, tessellated);
   for (const auto& light : scene.lights) {
     const LightSample fromOrigin = light->illuminate(Vec3(0.0f));
-    const std::vector<LightView> views =
+    const std::vector<AxisView> views =
         std::isfinite(fromOrigin.distance)
             ? cubeViews(fromOrigin.toLight * fromOrigin.distance, settings.size)
             : orthographicView(tessellated, scene, -fromOrigin.toLight, settings.size);
     std::vector<DepthMap>& maps = maps_.emplace_back();
     const std::size_t texels = static_cast<std::size_t>(settings.size) * settings.size;
-    for (const LightView& view : views) {
+    for (const AxisView& view : views) {
       maps.push_back({view, std::vector<float>(texels, kInfiniteDepth), {}, {}});
       if (!transparency) continue;
       maps.back().filterDepth.assign(texels, kInfiniteDepth);
@@ -238,9 +158,9 @@ Color ShadowMaps::reaching(int light, const Vec3& position, const Vec3& normal) 
   const DepthMap& map =
       maps.size() == 1 ? maps[0]
                        : maps[static_cast<std::size_t>(cubeFaceOf(position - maps[0].view.origin))];
-  const LightView& view = map.view;
+  const AxisView& view = map.view;
   const Vec3 seen = view.toView(position);
-  if (view.perspective && seen.z <= kNearDistance) return Color(1.0f);
+  if (view.perspective && seen.z <= kAxisViewNear) return Color(1.0f);
   const Vec2 onMap = view.toMap(seen);
   const float size = static_cast<float>(view.size);
   // Outside an orthographic map no finite shape casts a shadow; a cube face

@@ -9,6 +9,7 @@
 #include "core/image.hpp"
 #include "core/parallel.hpp"
 #include "core/stats.hpp"
+#include "raster/axis_view.hpp"
 #include "raster/tessellated_scene.hpp"
 #include "shading/light_visibility.hpp"
 
@@ -20,34 +21,11 @@ struct ShadowMapSettings {
   int filterRadius = 1;  // percentage-closer filtering over (2 r + 1)^2 texels; 0: one texel
 };
 
-// What a light sees along one axis, on a square map of size x size texels:
-// a face of a cube around a point light (a 90-degree perspective view), or an
-// orthographic view along a directional light. Coordinates in the view are
-// (right, up, forward) from its origin; the depth of a point is its forward
-// coordinate.
-struct LightView {
-  Vec3 origin, right, up, forward;
-  bool perspective;
-  float halfWidth;  // orthographic: half the side of the square seen
-  int size;
-
-  Vec3 toView(const Vec3& world) const;
-  // The map position of a point given in view coordinates (in front of a
-  // perspective view's origin).
-  Vec2 toMap(const Vec3& view) const;
-  // What is affine across a polygon's image on the map: 1 / depth under
-  // perspective, the depth itself under an orthographic view.
-  float affineDepth(float depth) const { return perspective ? 1.0f / depth : depth; }
-  float depthOfAffine(float affine) const { return perspective ? 1.0f / affine : affine; }
-  // The side of a texel in the world at `depth`.
-  float texelSize(float depth) const;
-};
-
 // One depth image: for each texel, the depth of the nearest opaque surface,
 // and, when the scene has transparent ones, the depth and material of the
 // nearest transparent surface in front of it (infinite depth: none).
 struct DepthMap {
-  LightView view;
+  AxisView view;  // a face of the cube around a light at a point, or along a directional light
   std::vector<float> opaque;
   std::vector<float> filterDepth;
   std::vector<int> filterMaterial;

@@ -86,7 +86,7 @@ RenderNeeds visibleSurfaceNeeds(const Scene& scene, const RenderSettings& settin
   };
   const std::uint64_t triangles = tessellatedTriangles(scene, settings.tessellation);
   add(triangles * kBytesPerTessellatedTriangle,
-      "the " + std::to_string(triangles) + " triangles of --tessellation " +
+      "the " + grouped(triangles) + " triangles of --tessellation " +
           std::to_string(settings.tessellation),
       "a lower --tessellation");
   if (settings.shadows == ShadowMethod::Map) {

@@ -72,4 +72,28 @@ std::string_view radiositySolverName(RadiositySolver solver) {
   return "?";
 }
 
+std::string_view formFactorMethodName(FormFactorMethod method) {
+  switch (method) {
+    case FormFactorMethod::Rays:
+      return "rays";
+    case FormFactorMethod::Hemicube:
+      return "hemicube";
+  }
+  return "?";
+}
+
+std::string_view radiosityDisplayName(RadiosityDisplay display) {
+  switch (display) {
+    case RadiosityDisplay::ZBuffer:
+      return "z-buffer";
+    case RadiosityDisplay::Scanline:
+      return "scanline";
+    case RadiosityDisplay::DepthSort:
+      return "depth-sort";
+    case RadiosityDisplay::AreaSubdivision:
+      return "area-subdivision";
+  }
+  return "?";
+}
+
 }  // namespace rise

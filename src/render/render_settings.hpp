@@ -65,13 +65,33 @@ inline constexpr RadiositySolver kAllRadiositySolvers[] = {RadiositySolver::Prog
                                                            RadiositySolver::GaussSeidel};
 std::string_view radiositySolverName(RadiositySolver solver);  // "progressive"
 
-// Radiosity's: the longest side of an element (0: a 24th of the scene's
-// size, or more where that makes more than 3,000 elements), and the residual it solves to: the
-// light not yet passed on, over the light the sources give.
+// How radiosity finds its form factors: from each patch's centre to each
+// other patch in closed form, with a ray for their visibility (Wallace,
+// Elmquist and Haines 1989), or by drawing every patch onto a hemicube
+// around it (Cohen and Greenberg 1985).
+enum class FormFactorMethod { Rays, Hemicube };
+inline constexpr FormFactorMethod kAllFormFactorMethods[] = {FormFactorMethod::Rays,
+                                                             FormFactorMethod::Hemicube};
+std::string_view formFactorMethodName(FormFactorMethod method);  // "rays"
+
+// The visible-surface algorithm that draws radiosity's solution.
+enum class RadiosityDisplay { ZBuffer, Scanline, DepthSort, AreaSubdivision };
+inline constexpr RadiosityDisplay kAllRadiosityDisplays[] = {
+    RadiosityDisplay::ZBuffer, RadiosityDisplay::Scanline, RadiosityDisplay::DepthSort,
+    RadiosityDisplay::AreaSubdivision};
+std::string_view radiosityDisplayName(RadiosityDisplay display);  // its -a name: "z-buffer"
+
+// Radiosity's: the side of a patch (0: a 24th of the scene's size, or more
+// where that makes more than 3,000 patches), the residual it solves to (the
+// light not yet passed on, over the light the sources give), how, the
+// hemicube's texels a side, and what draws the solution.
 struct RadiositySettings {
   float patchSize = 0.0f;
   double residual = 0.01;
   RadiositySolver solver = RadiositySolver::Progressive;
+  FormFactorMethod formFactors = FormFactorMethod::Rays;
+  int hemicubeSize = 128;
+  RadiosityDisplay display = RadiosityDisplay::ZBuffer;
 };
 
 // How long a progressive algorithm (the path tracer) refines its image, pass

@@ -18,33 +18,46 @@ std::string_view toString(Family family) {
   return "?";
 }
 
-std::string_view toString(Option option) {
+std::span<const std::string_view> flagsOf(Option option) {
+  static constexpr std::string_view kShading[] = {"shading"}, kCulling[] = {"no-cull"},
+                                    kTessellation[] = {"tessellation"},
+                                    kPlaneSize[] = {"plane-size"},
+                                    kShadows[] = {"shadows", "shadow-map-size", "shadow-bias",
+                                                  "shadow-filter"},
+                                    kTransparency[] = {"transparency"}, kAccel[] = {"accel"},
+                                    kMaxDepth[] = {"max-depth"},
+                                    kLightSampling[] = {"light-sampling", "no-roulette"},
+                                    kProgression[] = {"time-limit", "noise-target"},
+                                    kRadiosity[] = {"patch-size",   "residual",      "solver",
+                                                    "form-factors", "hemicube-size", "display"};
   switch (option) {
     case Option::Shading:
-      return "shading";
+      return kShading;
     case Option::Culling:
-      return "no-cull";
+      return kCulling;
     case Option::Tessellation:
-      return "tessellation";
+      return kTessellation;
     case Option::PlaneSize:
-      return "plane-size";
+      return kPlaneSize;
     case Option::Shadows:
-      return "shadows";
+      return kShadows;
     case Option::Transparency:
-      return "transparency";
+      return kTransparency;
     case Option::Accel:
-      return "accel";
+      return kAccel;
     case Option::MaxDepth:
-      return "max-depth";
+      return kMaxDepth;
     case Option::LightSampling:
-      return "light-sampling";
+      return kLightSampling;
     case Option::Progression:
-      return "time-limit";
+      return kProgression;
     case Option::Radiosity:
-      return "patch-size";
+      break;
   }
-  return "?";
+  return kRadiosity;
 }
+
+std::string_view toString(Option option) { return flagsOf(option).front(); }
 
 std::string_view toString(Effect effect) {
   switch (effect) {

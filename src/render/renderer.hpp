@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <map>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -72,7 +73,7 @@ enum class Option {
   MaxDepth,
   LightSampling,  // and the roulette
   Progression,    // the time limit and the noise target
-  Radiosity       // the patch size, the residual and the solver
+  Radiosity       // the patches, the residual, the solver, the form factors, the display
 };
 inline constexpr Option kAllOptions[] = {
     Option::Shading,       Option::Culling,      Option::Tessellation, Option::PlaneSize,
@@ -107,6 +108,9 @@ enum class TileStatistics { Summed, WholeImage };
 
 std::string_view toString(Family family);
 std::string_view toString(Option option);  // as on the command line: "shading"
+// Every command-line flag of the option, without the dashes: "shadows",
+// "shadow-map-size", ...; the first is its toString.
+std::span<const std::string_view> flagsOf(Option option);
 std::string_view toString(Effect effect);  // in words: "depth of field"
 std::string_view toString(Look look);      // in words: "ray trees"
 

@@ -126,11 +126,16 @@ constexpr std::array kMeanings = {
     Entry{"form_factors", "form factors found: a number for every ordered pair of patches"},
     Entry{"visibility_rays",
           "rays between two patches, to find what blocks the light between them"},
+    Entry{"hemicube_texels",
+          "texels of the patches' hemicubes that showed another patch: its share of the form "
+          "factor"},
     Entry{"shots", "shots of progressive refinement: a patch passing on its unshot light"},
     Entry{"sweeps", "sweeps of Gauss-Seidel over the equations"},
     Entry{"residual",
           "the light still to pass on (or still changing) over the sources': 0.01 is 1%"},
-    Entry{"solve_seconds", "seconds spent meshing and solving, before the display"},
+    Entry{"solve_seconds",
+          "seconds spent meshing and solving, before the display: next to none where the last "
+          "render's solution was drawn again"},
     // rise render --reference
     Entry{"reference_rmse",
           "the root mean square of the linear colours' differences from the reference image"},
