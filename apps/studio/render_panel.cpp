@@ -120,6 +120,12 @@ void Studio::drawRenderPanel() {
     ImGui::SetTooltip("The next render records what the algorithm does, for the step player");
   track("Record the steps");
   ImGui::SameLine();
+  ImGui::Checkbox("Follow the scene", &followScene_);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Render again at each change to the scene: orbit a radiosity solution in the viewport");
+  track("Follow the scene");
+  ImGui::SameLine();
   ImGui::TextDisabled("Click a pixel of a ray-traced image to see its rays.");
   if (ImGui::CollapsingHeader("Settings")) drawRenderSettings(renderer.description());
   drawRenderImage();

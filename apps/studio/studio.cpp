@@ -220,6 +220,9 @@ void Studio::updateRenders() {
     } else if (renderedRevision_ != session_.revision() && session_.scene()) {
       startRender();  // the scene changed under the render
     }
+  } else if (followScene_ && render_.result && renderedRevision_ != session_.revision() &&
+             session_.scene()) {
+    startRender();
   }
   std::erase_if(stopping_, [this](const std::unique_ptr<RenderJob>& job) {
     if (!job->finished()) return false;

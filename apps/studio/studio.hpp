@@ -122,6 +122,9 @@ class Studio {
   // tree of rays of each of its samples.
   void inspectPixel(const glm::ivec2& pixel);
   void setRecordingSteps(bool on) { recordSteps_ = on; }
+  // Whether each change to the scene (a camera orbited in the viewport)
+  // renders it again: radiosity draws its last solution from the new camera.
+  void setRenderingAsTheSceneChanges(bool on) { followScene_ = on; }
   void showStep(int step);
   bool saveImage(const std::filesystem::path& path);
   // The ray trees of the pixel clicked, as `rise inspect` prints them.
@@ -222,6 +225,7 @@ class Studio {
 
   Comparison comparison_;
   bool recordSteps_ = false;
+  bool followScene_ = false;
   StepPlayer player_;
   PixelInspection inspection_;
   Viewport viewport_;

@@ -8,7 +8,11 @@
 
 RMSE = sqrt(sum over the pixels and the three channels of (a - b)^2 / (3 W H)),
 in the images' own linear units (radiance): no tone mapping, no clamping.
-`--half-difference A1 A2` prints RMSE(A1, A2) / 2, the noise (standard
+`--below L A B` takes only the pixels where each channel of both is under L
+(a room's walls, without its lamp), and prints the RMSE there, the relative
+error (the sum of |a - b| over the sum of b), and how many pixels it left out
+where A alone reaches L. `--half-difference A1 A2`
+prints RMSE(A1, A2) / 2, the noise (standard
 error) that the mean of two independent renders A1 and A2 keeps, for a
 reference made of two halves. `--average A1 A2 OUT` writes their mean.
 
@@ -183,6 +187,33 @@ def rmse(path_a, path_b):
     return math.sqrt(total / (3 * wa * ha))
 
 
+def errors_below(path_a, path_b, limit):
+    """Over the pixels where each channel of both images is under `limit`: the
+    RMSE and the relative error, the sum of |a - b| over the sum of b; and the
+    pixels left out where b alone is under it (a bright rim that a shows and b
+    does not)."""
+    wa, ha, a = rgb(path_a)
+    wb, hb, b = rgb(path_b)
+    if (wa, ha) != (wb, hb):
+        fail(f"{path_a} is {wa}x{ha}, {path_b} is {wb}x{hb}")
+    squares, absolute, total, count, bright = 0.0, 0.0, 0.0, 0, 0
+    for pixel in range(wa * ha):
+        if not all(plane[pixel] < limit for plane in b):
+            continue
+        if not all(plane[pixel] < limit for plane in a):
+            bright += 1
+            continue
+        for plane_a, plane_b in zip(a, b):
+            difference = plane_a[pixel] - plane_b[pixel]
+            squares += difference * difference
+            absolute += abs(difference)
+            total += plane_b[pixel]
+        count += 3
+    if count == 0 or total <= 0.0:
+        fail(f"no lit pixel of {path_b} is under {limit}")
+    return math.sqrt(squares / count), absolute / total, bright
+
+
 def write_exr(path, width, height, planes):
     """An uncompressed scan-line OpenEXR file of FLOAT R, G and B."""
     def attribute(name, kind, value):
@@ -262,6 +293,8 @@ def main():
     group.add_argument("--pixel", metavar="X,Y", help="print the R, G, B of one pixel of each image")
     group.add_argument("--brightest", action="store_true",
                        help="print the R, G, B of each image's brightest pixel (largest R + G + B)")
+    group.add_argument("--below", type=float, metavar="L",
+                       help="A B: the RMSE and relative error where B is under L")
     parser.add_argument("images", nargs="+")
     args = parser.parse_args()
     if args.mean or args.pixel or args.brightest:
@@ -281,6 +314,11 @@ def main():
         if len(args.images) != 2:
             fail("--preview takes A.exr OUT.png")
         preview(*args.images)
+    elif args.below is not None:
+        if len(args.images) != 2:
+            fail("--below takes A.exr B.exr")
+        value, relative, bright = errors_below(*args.images, args.below)
+        print(f"{value:.6f} {relative:.6f} {bright}")
     elif args.average:
         if len(args.images) != 3:
             fail("--average takes A1.exr A2.exr OUT.exr")

@@ -177,5 +177,49 @@ TEST(Radiosity, ANewCameraDrawsTheLastSolutionAgain) {
   EXPECT_GT(shareDiffering(darker.image, moved.image), 0.2);
 }
 
+class RecordingObserver final : public RenderObserver {
+ public:
+  StepRecorder* stepRecorder() override { return &recorder; }
+  StepRecorder recorder;
+};
+
+double valueOf(const Step& step, std::string_view name) {
+  for (const auto& [key, value] : step.values)
+    if (key == name) return value;
+  return -1.0;
+}
+
+// The steps of solving come before the display's: the mesh, then every
+// shot, the lamp's first, the residual falling, the image drawn after the
+// first shot.
+TEST(Radiosity, TellsEveryShotInItsSteps) {
+  const Scene scene =
+      loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/cornell-box-measured.yaml");
+  RenderSettings settings = radiositySettings(scene, 150.0f);
+  settings.width = 40;
+  settings.height = 30;
+  RecordingObserver observer;
+  const RenderResult result = RadiosityRenderer().render(scene, settings, observer);
+  const std::vector<Step> steps = observer.recorder.allSteps();
+  ASSERT_FALSE(steps.empty());
+  EXPECT_EQ(steps.front().kind, "mesh");
+  EXPECT_EQ(valueOf(steps.front(), "patches"), result.stats.value("patches"));
+  std::vector<const Step*> shots;
+  for (const Step& step : steps)
+    if (step.kind == "shot") shots.push_back(&step);
+  ASSERT_EQ(static_cast<double>(shots.size()), result.stats.value("shots"));
+  ASSERT_EQ(steps[1].kind, "shot");  // before the display's steps
+  const Patch& firstShooter =
+      SolvedScene{meshForRadiosity(scene, settings), {}}
+          .mesh.patchMesh.patches[static_cast<std::size_t>(valueOf(*shots[0], "shooter"))];
+  EXPECT_EQ(scene.materials[firstShooter.material].name, "light");
+  EXPECT_FALSE(shots[0]->shapes.empty());
+  EXPECT_EQ(shots[0]->writes.size(), static_cast<std::size_t>(40 * 30));
+  EXPECT_TRUE(shots[2]->writes.empty());  // the third: not a power of two
+  // The light still to pass on falls, shot after shot, to the residual.
+  EXPECT_LT(valueOf(*shots.back(), "residual"), 0.1 * valueOf(*shots.front(), "residual"));
+  EXPECT_LE(result.stats.value("residual"), settings.radiosity.residual);
+}
+
 }  // namespace
 }  // namespace rise

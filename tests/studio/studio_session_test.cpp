@@ -277,6 +277,34 @@ layout ${OUT}/steps-again.txt
   EXPECT_FALSE(view.contains("Play"));
 }
 
+// Following the scene, the studio renders radiosity again as the camera
+// moves, without the Render button: the room from the new camera, as the
+// command line draws it there.
+TEST_F(Studio, OrbitsASolvedRoomFollowingTheScene) {
+  ASSERT_EQ(runSession(R"(open ${RISE_SOURCE_DIR}/examples/cornell-box-measured.yaml
+algorithm radiosity
+setting width 160
+setting height 120
+click Render
+wait
+save-image ${OUT}/before.png
+click Follow the scene
+set camera/position [400, 300, -700]
+frames 3
+wait
+save-scene ${OUT}/orbited.yaml
+save-image ${OUT}/after.png
+)",
+                       "'" RISE_EXECUTABLE "' studio"),
+            0);
+  EXPECT_NE(fileText(directory_ / "after.png"), fileText(directory_ / "before.png"));
+  ASSERT_EQ(runCli("render '" + (directory_ / "orbited.yaml").string() +
+                   "' -a radiosity --width 160 --height 120 -o '" +
+                   (directory_ / "cli.png").string() + "'"),
+            0);
+  EXPECT_EQ(fileText(directory_ / "after.png"), fileText(directory_ / "cli.png"));
+}
+
 TEST_F(Studio, KeepsDrawingWhileRenderingAndCancelsQuickly) {
   // A render of some seconds: the window keeps drawing frames (none takes a
   // second, though software OpenGL shares the cores with the render), an edit

@@ -1,0 +1,37 @@
+// The steps of radiosity's solution, for `rise explain` and the studio's
+// step player, before those of the algorithm that draws it: the mesh, then
+// each shot or sweep in the solver's words, the patch that shot outlined,
+// and the image as it stands drawn after the 1st, 2nd, 4th, 8th, ...
+#pragma once
+
+#include "radiosity/meshing.hpp"
+#include "radiosity/refinement.hpp"
+#include "radiosity/solvers.hpp"
+#include "raster/view_projection.hpp"
+#include "render/renderer.hpp"
+
+namespace rise {
+
+class SolutionSteps final : public SolverWatcher {
+ public:
+  SolutionSteps(StepRecorder& steps, const Scene& scene, const RenderSettings& settings,
+                const RadiosityMesh& mesh);
+
+  void recordMesh(const RefinementCounts& refined);
+  void onIteration(const SolverIteration& iteration,
+                   const std::function<std::vector<TwoSides>()>& elementLight) override;
+
+ private:
+  // The patch's elements on the screen, those wholly in front of the eye.
+  std::vector<StepShape> outlineOf(std::size_t patch) const;
+  // The image drawn from the elements' light, as pixels written.
+  std::vector<PixelWrite> imageOf(const std::vector<TwoSides>& elementLight) const;
+
+  StepRecorder& steps_;
+  const Scene& scene_;
+  const RenderSettings& settings_;
+  const RadiosityMesh& mesh_;
+  ViewProjection view_;
+};
+
+}  // namespace rise
