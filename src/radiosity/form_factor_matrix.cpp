@@ -23,7 +23,8 @@ float formFactorTo(const Patch& from, const Patch& to) {
 // of a solid neither gives nor takes light.
 bool facesOutward(const Patch& patch, int side) { return patch.twoSided || side == kFrontSide; }
 
-// The elements as the hemicube draws them, each its patch's.
+}  // namespace
+
 std::vector<HemicubeTriangle> hemicubeTriangles(const ElementMesh& elements,
                                                 const PatchMesh& patches) {
   std::vector<HemicubeTriangle> triangles;
@@ -33,8 +34,6 @@ std::vector<HemicubeTriangle> hemicubeTriangles(const ElementMesh& elements,
                          patches.patchOf[e]});
   return triangles;
 }
-
-}  // namespace
 
 FormFactorMatrix::FormFactorMatrix(const RadiosityMesh& mesh, const SceneIntersector& blockers,
                                    const RadiositySettings& settings, const Workers& workers,

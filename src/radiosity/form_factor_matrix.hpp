@@ -14,10 +14,15 @@
 #include <vector>
 
 #include "core/parallel.hpp"
+#include "radiosity/hemicube.hpp"
 #include "radiosity/meshing.hpp"
 #include "ray/scene_intersector.hpp"
 
 namespace rise {
+
+// The elements as the hemicube draws them, each its patch's.
+std::vector<HemicubeTriangle> hemicubeTriangles(const ElementMesh& elements,
+                                                const PatchMesh& patches);
 
 class FormFactorMatrix {
  public:

@@ -209,13 +209,26 @@ TEST(Radiosity, TellsEveryShotInItsSteps) {
     if (step.kind == "shot") shots.push_back(&step);
   ASSERT_EQ(static_cast<double>(shots.size()), result.stats.value("shots"));
   ASSERT_EQ(steps[1].kind, "shot");  // before the display's steps
-  const Patch& firstShooter =
-      SolvedScene{meshForRadiosity(scene, settings), {}}
-          .mesh.patchMesh.patches[static_cast<std::size_t>(valueOf(*shots[0], "shooter"))];
+  const Patch& firstShooter = SolvedScene{
+      meshForRadiosity(scene, settings),
+      {}}.mesh.patchMesh.patches[static_cast<std::size_t>(valueOf(*shots[0], "shooter"))];
   EXPECT_EQ(scene.materials[firstShooter.material].name, "light");
   EXPECT_FALSE(shots[0]->shapes.empty());
   EXPECT_EQ(shots[0]->writes.size(), static_cast<std::size_t>(40 * 30));
   EXPECT_TRUE(shots[2]->writes.empty());  // the third: not a power of two
+  // By the hemicube, the first shooter's five images come before the shots,
+  // their delta form factors summing to what the lamp sees of the room.
+  settings.radiosity.formFactors = FormFactorMethod::Hemicube;
+  settings.radiosity.hemicubeSize = 32;
+  RecordingObserver hemicubeObserver;
+  RadiosityRenderer().render(scene, settings, hemicubeObserver);
+  const std::vector<Step> hemicubeSteps = hemicubeObserver.recorder.allSteps();
+  ASSERT_GT(hemicubeSteps.size(), 2u);
+  EXPECT_EQ(hemicubeSteps[1].kind, "hemicube");
+  EXPECT_EQ(hemicubeSteps[1].writes.size(), static_cast<std::size_t>(40 * 30));
+  EXPECT_GT(valueOf(hemicubeSteps[1], "form_factors_sum"), 0.5);
+  EXPECT_LE(valueOf(hemicubeSteps[1], "form_factors_sum"), 1.0 + 1e-6);
+  EXPECT_EQ(hemicubeSteps[2].kind, "shot");
   // The light still to pass on falls, shot after shot, to the residual.
   EXPECT_LT(valueOf(*shots.back(), "residual"), 0.1 * valueOf(*shots.front(), "residual"));
   EXPECT_LE(result.stats.value("residual"), settings.radiosity.residual);

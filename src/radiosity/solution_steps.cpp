@@ -1,10 +1,12 @@
 #include "radiosity/solution_steps.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
 #include "core/text.hpp"
 #include "radiosity/display.hpp"
+#include "radiosity/form_factor_matrix.hpp"
 
 namespace rise {
 
@@ -69,7 +71,61 @@ void SolutionSteps::onIteration(const SolverIteration& iteration,
   step.values.push_back({"receivers", static_cast<double>(iteration.receivers)});
   step.values.push_back({"residual", iteration.residual});
   if (isPowerOfTwo(iteration.number)) step.writes = imageOf(elementLight());
-  steps_.record(std::move(step), kFirstOrder + iteration.number);
+  if (!swept && iteration.number == 1 &&
+      settings_.radiosity.formFactors == FormFactorMethod::Hemicube)
+    recordHemicube(iteration.patch, iteration.side);
+  steps_.record(std::move(step), kFirstOrder + 1 + iteration.number);
+}
+
+// The five faces laid out over the image: the top face on the left, the
+// four half sides in a column on its right, each texel in the colour of the
+// patch it shows (its material's, lighter or darker by the patch), black
+// where it shows none.
+void SolutionSteps::recordHemicube(std::size_t patch, int side) {
+  const Patch& shooter = mesh_.patchMesh.patches[patch];
+  const Vec3 normal = side == kFrontSide ? shooter.normal : -shooter.normal;
+  Hemicube hemicube(settings_.radiosity.hemicubeSize);
+  std::vector<float> formFactors(mesh_.patchMesh.patches.size(), 0.0f);
+  const std::uint64_t covered = hemicube.addFormFactors(
+      shooter.centre + 1e-4f * sceneSize(scene_) * normal, normal,
+      hemicubeTriangles(mesh_.elementMesh, mesh_.patchMesh), static_cast<int>(patch), formFactors);
+  const int r = hemicube.resolution();
+  // A texel of the layout, 2r x 2r: the top face at (0, r/2), side k at (r, k r/2).
+  const auto patchAt = [&](int u, int v) {
+    const int face = u < r ? 0 : 1 + v / (r / 2);
+    const int x = u % r, y = u < r ? v - r / 2 : v % (r / 2);
+    if (face == 0 && (y < 0 || y >= r)) return -1;
+    return hemicube.seen(face)[static_cast<std::size_t>(y) * r + x];
+  };
+  const PixelRect area = settings_.area();
+  const float scale = 2.0f * static_cast<float>(r) /
+                      static_cast<float>(std::min(settings_.width, settings_.height));
+  Step step{"hemicube", "the hemicube over patch " + std::to_string(patch) +
+                            ": its top face and four half " + "sides, " + std::to_string(r) +
+                            " texels a side, each texel the patch nearest in " +
+                            "its direction, which takes its delta form factor; " +
+                            counted(covered, "texel") + " show a patch"};
+  for (int y = area.y0; y < area.y1; ++y)
+    for (int x = area.x0; x < area.x1; ++x) {
+      const int u = static_cast<int>(x * scale), v = static_cast<int>(y * scale);
+      const int seen = u < 2 * r && v < 2 * r ? patchAt(u, v) : -1;
+      Color colour(0.0f);
+      if (seen >= 0) {
+        const Patch& shown = mesh_.patchMesh.patches[static_cast<std::size_t>(seen)];
+        colour = scene_.materials[shown.material].color *
+                 (0.6f + 0.4f * static_cast<float>((seen * 37) % 11) / 10.0f);
+      }
+      step.writes.push_back({x, y, colour, -1});
+    }
+  double sum = 0.0;
+  std::size_t seenPatches = 0;
+  for (const float formFactor : formFactors)
+    if (formFactor > 0.0f) sum += formFactor, ++seenPatches;
+  step.values = {{"shooter", static_cast<double>(patch)},
+                 {"hemicube_texels", static_cast<double>(covered)},
+                 {"patches_seen", static_cast<double>(seenPatches)},
+                 {"form_factors_sum", sum}};
+  steps_.record(std::move(step), kFirstOrder + 1);
 }
 
 std::vector<StepShape> SolutionSteps::outlineOf(std::size_t patch) const {

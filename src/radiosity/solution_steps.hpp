@@ -1,7 +1,8 @@
 // The steps of radiosity's solution, for `rise explain` and the studio's
 // step player, before those of the algorithm that draws it: the mesh, then
 // each shot or sweep in the solver's words, the patch that shot outlined,
-// and the image as it stands drawn after the 1st, 2nd, 4th, 8th, ...
+// and the image as it stands drawn after the 1st, 2nd, 4th, 8th, ...; with
+// the hemicube, the first shooter's five images of patch numbers.
 #pragma once
 
 #include "radiosity/meshing.hpp"
@@ -22,6 +23,7 @@ class SolutionSteps final : public SolverWatcher {
                    const std::function<std::vector<TwoSides>()>& elementLight) override;
 
  private:
+  void recordHemicube(std::size_t patch, int side);
   // The patch's elements on the screen, those wholly in front of the eye.
   std::vector<StepShape> outlineOf(std::size_t patch) const;
   // The image drawn from the elements' light, as pixels written.
