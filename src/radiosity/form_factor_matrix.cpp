@@ -1,7 +1,6 @@
 #include "radiosity/form_factor_matrix.hpp"
 
 #include <array>
-#include <span>
 
 #include "radiosity/direct_light.hpp"
 #include "radiosity/form_factors.hpp"

@@ -50,9 +50,8 @@ class Hemicube {
                                std::span<const HemicubeTriangle> triangles, int ignored,
                                std::span<float> formFactors);
 
-  // The five faces' views from the last point: the top face, then the
-  // sides, and by texel, row after row, the receiver seen (-1: none).
-  const std::array<AxisView, 5>& views() const { return views_; }
+  // What each of the five faces saw from the last point (the top face,
+  // then the sides): by texel, row after row, the receiver (-1: none).
   const std::vector<int>& seen(int face) const { return seen_[static_cast<std::size_t>(face)]; }
   // The rows of a face that lie above the surface: all of the top face's,
   // the upper half of a side's.

@@ -66,8 +66,8 @@ const AlgorithmDescription& RadiosityRenderer::description() const {
   static const AlgorithmDescription description{
       .name = "radiosity",
       .summary =
-          "Goral's radiosity: the light between diffuse surfaces solved once, drawn by the "
-          "z-buffer",
+          "Goral's radiosity: the light between diffuse surfaces solved once, drawn by a "
+          "visible-surface algorithm",
       .citation =
           "C. M. Goral, K. E. Torrance, D. P. Greenberg, B. Battaile, Modeling the interaction of "
           "light between diffuse surfaces, SIGGRAPH 1984; M. F. Cohen, D. P. Greenberg, The "
@@ -102,7 +102,7 @@ SolvedScene solveMeshed(const Scene& scene, const RenderSettings& settings, Radi
   const RefinementCounts refined = refineWhereTheLightChanges(solved.mesh, directLight, workers);
   const FormFactorMatrix formFactors(solved.mesh, blockers, settings.radiosity, workers, offset);
   std::optional<SolutionSteps> watcher;
-  if (steps) watcher.emplace(*steps, scene, settings, solved.mesh).recordMesh(refined);
+  if (steps) watcher.emplace(*steps, scene, settings, solved.mesh, offset).recordMesh(refined);
   solved.solution = solveEquations(scene, solved.mesh, formFactors, directLight, settings.radiosity,
                                    workers, watcher ? &*watcher : nullptr);
   solved.solution.elementsCut = refined.elementsCut;

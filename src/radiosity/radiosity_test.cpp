@@ -209,9 +209,9 @@ TEST(Radiosity, TellsEveryShotInItsSteps) {
     if (step.kind == "shot") shots.push_back(&step);
   ASSERT_EQ(static_cast<double>(shots.size()), result.stats.value("shots"));
   ASSERT_EQ(steps[1].kind, "shot");  // before the display's steps
-  const Patch& firstShooter = SolvedScene{
-      meshForRadiosity(scene, settings),
-      {}}.mesh.patchMesh.patches[static_cast<std::size_t>(valueOf(*shots[0], "shooter"))];
+  const RadiosityMesh mesh = meshForRadiosity(scene, settings);
+  const Patch& firstShooter =
+      mesh.patchMesh.patches[static_cast<std::size_t>(valueOf(*shots[0], "shooter"))];
   EXPECT_EQ(scene.materials[firstShooter.material].name, "light");
   EXPECT_FALSE(shots[0]->shapes.empty());
   EXPECT_EQ(shots[0]->writes.size(), static_cast<std::size_t>(40 * 30));

@@ -27,11 +27,13 @@ bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 }  // namespace
 
 SolutionSteps::SolutionSteps(StepRecorder& steps, const Scene& scene,
-                             const RenderSettings& settings, const RadiosityMesh& mesh)
+                             const RenderSettings& settings, const RadiosityMesh& mesh,
+                             float offset)
     : steps_(steps),
       scene_(scene),
       settings_(settings),
       mesh_(mesh),
+      offset_(offset),
       view_(ViewFrame(scene.camera, settings.width, settings.height)) {}
 
 void SolutionSteps::recordMesh(const RefinementCounts& refined) {
@@ -87,7 +89,7 @@ void SolutionSteps::recordHemicube(std::size_t patch, int side) {
   Hemicube hemicube(settings_.radiosity.hemicubeSize);
   std::vector<float> formFactors(mesh_.patchMesh.patches.size(), 0.0f);
   const std::uint64_t covered = hemicube.addFormFactors(
-      shooter.centre + 1e-4f * sceneSize(scene_) * normal, normal,
+      shooter.centre + offset_ * normal, normal,
       hemicubeTriangles(mesh_.elementMesh, mesh_.patchMesh), static_cast<int>(patch), formFactors);
   const int r = hemicube.resolution();
   // A texel of the layout, 2r x 2r: the top face at (0, r/2), side k at (r, k r/2).

@@ -15,8 +15,10 @@ namespace rise {
 
 class SolutionSteps final : public SolverWatcher {
  public:
+  // `offset`: how far off a surface its hemicube is drawn from, as the
+  // form factors' are.
   SolutionSteps(StepRecorder& steps, const Scene& scene, const RenderSettings& settings,
-                const RadiosityMesh& mesh);
+                const RadiosityMesh& mesh, float offset);
 
   void recordMesh(const RefinementCounts& refined);
   void onIteration(const SolverIteration& iteration,
@@ -33,6 +35,7 @@ class SolutionSteps final : public SolverWatcher {
   const Scene& scene_;
   const RenderSettings& settings_;
   const RadiosityMesh& mesh_;
+  float offset_;
   ViewProjection view_;
 };
 
