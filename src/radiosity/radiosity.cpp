@@ -90,13 +90,28 @@ namespace {
 
 std::uint64_t formFactorBytes(std::uint64_t patches) { return patches * patches * sizeof(float); }
 
-// `steps`, where not null, is told the mesh and each iteration.
+// A render's cancellation without its progress, which the display reports.
+class Cancellation final : public Progress {
+ public:
+  explicit Cancellation(const RenderObserver& observer) : observer_(observer) {}
+  bool cancelled() const override { return observer_.cancelled(); }
+
+ private:
+  const RenderObserver& observer_;
+};
+
+// `observer`, where not null, may cancel the solution, and its step
+// recorder, where it has one, is told the mesh and each iteration.
 SolvedScene solveMeshed(const Scene& scene, const RenderSettings& settings, RadiosityMesh mesh,
-                        StepRecorder* steps) {
+                        RenderObserver* observer) {
   SolvedScene solved{std::move(mesh), {}};
   const Scene elements = elementsAsScene(scene, solved.mesh.elementMesh);
   const SceneIntersector blockers(elements, settings.accel, settings.threads);
-  const Workers workers(settings.threads);
+  std::optional<Cancellation> cancellation;
+  if (observer) cancellation.emplace(*observer);
+  const Workers workers =
+      cancellation ? Workers(settings.threads, *cancellation) : Workers(settings.threads);
+  StepRecorder* const steps = observer ? observer->stepRecorder() : nullptr;
   const float offset = 1e-4f * sceneSize(scene);
   const DirectLight directLight(scene, blockers, offset);
   const RefinementCounts refined = refineWhereTheLightChanges(solved.mesh, directLight, workers);
@@ -120,15 +135,17 @@ SolvedScene solveRadiosity(const Scene& scene, const RenderSettings& settings) {
 
 std::shared_ptr<const SolvedScene> RadiosityRenderer::solved(const Scene& scene,
                                                              const RenderSettings& settings,
-                                                             StepRecorder* steps) const {
+                                                             RenderObserver& observer) const {
   RadiosityMesh mesh = meshForRadiosity(scene, settings);
   const std::uint64_t fingerprint = fingerprintOf(scene, mesh, settings.radiosity);
   {
     const std::lock_guard lock(lastMutex_);
-    if (last_ && lastFingerprint_ == fingerprint && !steps) return last_;
+    if (last_ && lastFingerprint_ == fingerprint && !observer.stepRecorder()) return last_;
   }
   auto solution =
-      std::make_shared<const SolvedScene>(solveMeshed(scene, settings, std::move(mesh), steps));
+      std::make_shared<const SolvedScene>(solveMeshed(scene, settings, std::move(mesh), &observer));
+  // A solution cut short is drawn by nobody, and kept for nobody.
+  if (observer.cancelled()) return solution;
   const std::lock_guard lock(lastMutex_);
   last_ = solution;
   lastFingerprint_ = fingerprint;
@@ -152,8 +169,7 @@ RenderNeeds RadiosityRenderer::needs(const Scene& scene, const RenderSettings& s
 RenderResult RadiosityRenderer::render(const Scene& scene, const RenderSettings& settings,
                                        RenderObserver& observer) const {
   const auto start = std::chrono::steady_clock::now();
-  const std::shared_ptr<const SolvedScene> solvedScene =
-      solved(scene, settings, observer.stepRecorder());
+  const std::shared_ptr<const SolvedScene> solvedScene = solved(scene, settings, observer);
   const RadiositySolution& solution = solvedScene->solution;
   const RadiosityMesh& mesh = solvedScene->mesh;
   const double solveSeconds = secondsSince(start);

@@ -23,10 +23,10 @@ class RadiosityRenderer final : public Renderer {
 
  private:
   // The scene's solution: the last one again where the scene, its mesh and
-  // the settings of radiosity are those it was solved from, and no one
-  // wants the steps of solving it (`steps`, where not null).
+  // the settings of radiosity are those it was solved from, and the
+  // observer wants no steps of solving it; it may cancel the solution.
   std::shared_ptr<const SolvedScene> solved(const Scene& scene, const RenderSettings& settings,
-                                            StepRecorder* steps) const;
+                                            RenderObserver& observer) const;
 
   // The last solution, and the fingerprint of what it was solved from: a
   // new camera on the same scene (the studio's orbit) only draws it again.

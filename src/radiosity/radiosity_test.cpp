@@ -234,5 +234,27 @@ TEST(Radiosity, TellsEveryShotInItsSteps) {
   EXPECT_LE(result.stats.value("residual"), settings.radiosity.residual);
 }
 
+class CancellingObserver final : public RenderObserver {
+ public:
+  bool cancelled() const override { return true; }
+};
+
+// A cancelled render stops solving, and its solution, cut short, is not
+// the one the next render of the scene draws.
+TEST(Radiosity, ACancelledSolutionIsNotKept) {
+  const Scene scene =
+      loadSceneFile(std::string(RISE_SOURCE_DIR) + "/examples/cornell-box-measured.yaml");
+  RenderSettings settings = radiositySettings(scene, 0.0f);
+  settings.width = settings.height = 48;
+  const RadiosityRenderer radiosity;
+  CancellingObserver cancelling;
+  const RenderResult cancelled = radiosity.render(scene, settings, cancelling);
+  EXPECT_EQ(cancelled.stats.value("shots"), 0.0);
+  RenderObserver observer;
+  const RenderResult whole = radiosity.render(scene, settings, observer);
+  EXPECT_GT(whole.stats.value("shots"), 0.0);
+  EXPECT_LE(whole.stats.value("residual"), settings.radiosity.residual);
+}
+
 }  // namespace
 }  // namespace rise

@@ -121,7 +121,8 @@ class Solver {
     std::vector<TwoSides> unshot = sources;
     const double sourcePower = powerOf(sources);
     const std::size_t mostShots = 200 * std::max<std::size_t>(count_, 1);
-    for (std::size_t shot = 0; shot < mostShots && sourcePower > 0.0; ++shot) {
+    for (std::size_t shot = 0; shot < mostShots && sourcePower > 0.0 && !workers_.cancelled();
+         ++shot) {
       std::size_t shooter = 0;
       int shootingSide = kFrontSide;
       double most = -1.0, unshotPower = 0.0;
@@ -166,7 +167,7 @@ class Solver {
     gathered_.assign(count_, TwoSides{Color(0.0f), Color(0.0f)});
     const double sourcePower = powerOf(sources);
     constexpr int kMostSweeps = 1000;
-    while (sourcePower > 0.0 && solution_.iterations < kMostSweeps) {
+    while (sourcePower > 0.0 && solution_.iterations < kMostSweeps && !workers_.cancelled()) {
       double changed = 0.0;
       std::size_t changing = 0;
       for (std::size_t i = 0; i < count_; ++i) {
