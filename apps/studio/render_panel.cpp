@@ -125,7 +125,6 @@ void Studio::drawRenderPanel() {
     ImGui::SetTooltip(
         "Render again at each change to the scene: orbit a radiosity solution in the viewport");
   track("Follow the scene");
-  ImGui::SameLine();
   ImGui::TextDisabled("Click a pixel of a ray-traced image to see its rays.");
   if (ImGui::CollapsingHeader("Settings")) drawRenderSettings(renderer.description());
   drawRenderImage();
